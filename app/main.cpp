@@ -1,0 +1,44 @@
+// dvsgi command-line entry point: parse, dispatch, and turn every failure into
+// one line on stderr with a non-zero exit code.
+#include <cstdio>
+#include <exception>
+#include <new>
+
+#include "gpu/check.h"
+#include "image/image_io.h"
+#include "options.h"
+#include "render_command.h"
+#include "scene/load.h"
+
+int main(int argc, char** argv) {
+    using namespace dvsgi;
+    const app::ParseResult parsed = app::parseCommandLine(argc, argv);
+    if (!parsed.error.empty()) {
+        std::fprintf(stderr, "dvsgi: %s\n", parsed.error.c_str());
+        return 2;
+    }
+    try {
+        switch (parsed.command) {
+            case app::Command::Help: std::fputs(app::usageText().c_str(), stdout); return 0;
+            case app::Command::Version: std::puts("dvsgi 0.1.0"); return 0;
+            case app::Command::Render: return app::runRender(parsed.render);
+            case app::Command::View:
+                std::fprintf(stderr, "dvsgi: 'view' is not available in this build yet (issue #6)\n");
+                return 2;
+            case app::Command::Bench:
+                std::fprintf(stderr, "dvsgi: 'bench' is not available in this build yet (issue #3-#5)\n");
+                return 2;
+        }
+    } catch (const scene::LoadError& e) {
+        std::fprintf(stderr, "dvsgi: %s\n", e.what());
+    } catch (const image::IoError& e) {
+        std::fprintf(stderr, "dvsgi: %s\n", e.what());
+    } catch (const gpu::GpuError& e) {
+        std::fprintf(stderr, "dvsgi: %s\n", e.what());
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "dvsgi: out of host memory\n");
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "dvsgi: %s\n", e.what());
+    }
+    return 1;
+}

@@ -1,0 +1,40 @@
+// Command-line options of the dvsgi executable, as plain data. app/cli.cpp parses
+// argv into these; nothing else in the program reads argv.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dvsgi::app {
+
+enum class Command { Render, View, Bench, Help, Version };
+
+// Everything `dvsgi render` accepts. Defaults are the documented ones in --help.
+struct RenderOptions {
+    std::string scene;            // empty = built-in Cornell box
+    std::string outExr = "out/render.exr";
+    std::string outPng;           // empty = outExr with .png; "none" = no preview
+    uint32_t width = 512;
+    uint32_t height = 512;
+    int camera = 0;               // index among the scene's cameras
+    float exposure = 0.0f;        // EV applied to the PNG preview only
+    std::string metricsPath;      // empty = no metrics JSON
+    std::string device;           // substring of the device name; empty = best
+    bool validate = false;        // Khronos validation layer
+    uint32_t shadowMapSize = 2048;
+    uint32_t supersample = 1;     // k: render k*W x k*H and box-filter to W x H
+    bool quiet = false;           // no timing table on stdout
+};
+
+struct ParseResult {
+    Command command = Command::Help;
+    RenderOptions render;
+    std::string error;  // non-empty: one line naming the option, exit code 2
+};
+
+ParseResult parseCommandLine(int argc, const char* const* argv);
+std::string usageText();  // the full --help text
+
+}  // namespace dvsgi::app

@@ -1,0 +1,30 @@
+# Compiles GLSL with glslc at build time into C++ headers holding the SPIR-V words
+# (glslc -mfmt=num), so the binary embeds its shaders and no .spv is ever committed.
+#   dvsgi_add_shaders(TARGET name SOURCES a.comp b.vert ...)
+# creates an INTERFACE library `name` whose include directory holds
+# shaders/<file>.<stage>.inc for every source (e.g. shaders/lighting.comp.inc).
+function(dvsgi_add_shaders)
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/include/shaders)
+  file(MAKE_DIRECTORY ${out_dir})
+  set(outputs)
+  foreach(src ${ARG_SOURCES})
+    get_filename_component(name ${src} NAME)
+    set(abs ${CMAKE_CURRENT_SOURCE_DIR}/${src})
+    set(out ${out_dir}/${name}.inc)
+    set(dep ${CMAKE_CURRENT_BINARY_DIR}/${name}.d)
+    add_custom_command(
+      OUTPUT ${out}
+      COMMAND ${GLSLC} --target-env=vulkan1.3 -O -g -I ${CMAKE_CURRENT_SOURCE_DIR}
+              -MD -MF ${dep} -mfmt=num -o ${out} ${abs}
+      DEPENDS ${abs}
+      DEPFILE ${dep}
+      COMMENT "glslc ${name}"
+      VERBATIM)
+    list(APPEND outputs ${out})
+  endforeach()
+  add_custom_target(${ARG_TARGET}_compile DEPENDS ${outputs})
+  add_library(${ARG_TARGET} INTERFACE)
+  add_dependencies(${ARG_TARGET} ${ARG_TARGET}_compile)
+  target_include_directories(${ARG_TARGET} INTERFACE ${CMAKE_CURRENT_BINARY_DIR}/include)
+endfunction()

@@ -1,0 +1,44 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared/scene_data.h"
+#include "shared/bindings.h"
+
+layout(set = 0, binding = BIND_GEOM_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
+layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
+
+#include "lib/material.glsl"
+
+layout(location = 0) in vec3 inNormal;
+layout(location = 1) in vec2 inUV;
+layout(location = 2) flat in uint inMaterial;
+
+layout(location = 0) out vec4 outBase;      // rgb base colour (linear), a metallic
+layout(location = 1) out vec4 outNormal;    // xyz world normal facing the viewer, a roughness
+layout(location = 2) out vec4 outEmission;  // rgb emitted radiance, a = 1 where geometry is
+
+void main() {
+    GpuMaterial m = materials[inMaterial];
+    vec4 base = materialBaseColor(m, inUV);
+    if (!materialCovers(m, base.a, gl_FragCoord.xy)) discard;
+
+    float metallic = m.params.x, roughness = m.params.y;
+    if (m.textures.z != NO_TEXTURE) {
+        vec4 mr = sampleTexture(m.textures.z, inUV);
+        roughness *= mr.g;
+        metallic *= mr.b;
+    }
+    // Back faces reflect like front faces (CONVENTIONS.md), so shade them with
+    // the flipped normal; only emission is one-sided.
+    vec3 N = normalize(inNormal);
+    if (!gl_FrontFacing) N = -N;
+
+    vec3 emission = vec3(0.0);
+    if (gl_FrontFacing || m.flags.y != 0u) {
+        emission = m.emission.rgb;
+        if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, inUV).rgb;
+    }
+    outBase = vec4(base.rgb, metallic);
+    outNormal = vec4(N, roughness);
+    outEmission = vec4(emission, 1.0);
+}

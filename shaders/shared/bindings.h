@@ -1,0 +1,36 @@
+// Descriptor binding numbers of every pass (set 0 is pushed per pass; set 1 is
+// the scene's texture table). C++ and GLSL both read them from here.
+#ifndef DVSGI_SHARED_BINDINGS_H
+#define DVSGI_SHARED_BINDINGS_H
+
+#include "common.h"
+
+DVSGI_BEGIN
+
+// Scene geometry passes (G-buffer, shadow maps).
+DVSGI_CONST(uint, BIND_GEOM_FRAME, 0);
+DVSGI_CONST(uint, BIND_GEOM_DRAWS, 1);
+DVSGI_CONST(uint, BIND_GEOM_MATERIALS, 2);
+DVSGI_CONST(uint, BIND_GEOM_SHADOW_VIEWS, 3);
+DVSGI_CONST(uint, SET_TEXTURES, 1);
+DVSGI_CONST(uint, BIND_TEXTURES, 0);
+DVSGI_CONST(uint, BIND_TEXTURE_SAMPLER, 1);
+
+// Deferred direct lighting.
+DVSGI_CONST(uint, BIND_LIGHT_FRAME, 0);
+DVSGI_CONST(uint, BIND_LIGHT_GBUF_BASE, 1);
+DVSGI_CONST(uint, BIND_LIGHT_GBUF_NORMAL, 2);
+DVSGI_CONST(uint, BIND_LIGHT_GBUF_EMISSION, 3);
+DVSGI_CONST(uint, BIND_LIGHT_DEPTH, 4);
+DVSGI_CONST(uint, BIND_LIGHT_LIGHTS, 5);
+DVSGI_CONST(uint, BIND_LIGHT_SHADOW_VIEWS, 6);
+DVSGI_CONST(uint, BIND_LIGHT_SHADOW_MAP, 7);
+DVSGI_CONST(uint, BIND_LIGHT_OUT_DIRECT, 8);
+
+// Composition and resolve to the output size.
+DVSGI_CONST(uint, BIND_COMP_DIRECT, 0);
+DVSGI_CONST(uint, BIND_COMP_OUT, 1);
+
+DVSGI_END
+
+#endif

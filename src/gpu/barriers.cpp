@@ -1,0 +1,58 @@
+#include "gpu/barriers.h"
+
+#include "gpu/resources.h"
+
+namespace dvsgi::gpu {
+
+namespace {
+
+void imageBarrier(VkCommandBuffer cmd, const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = from.stages ? from.stages : VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
+    b.srcAccessMask = from.access;
+    b.dstStageMask = to.stages;
+    b.dstAccessMask = to.access;
+    b.oldLayout = from.layout;
+    b.newLayout = to.layout;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image.handle();
+    b.subresourceRange = range;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
+    VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    b.srcStageMask = srcStages;
+    b.srcAccessMask = srcAccess;
+    b.dstStageMask = dstStages;
+    b.dstAccessMask = dstAccess;
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.memoryBarrierCount = 1;
+    dep.pMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+}  // namespace
+
+void transition(VkCommandBuffer cmd, const Image& image, ImageUse from, ImageUse to) {
+    imageBarrier(cmd, image, {image.aspect(), 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS}, from, to);
+}
+
+void transitionMip(VkCommandBuffer cmd, const Image& image, uint32_t mip, ImageUse from, ImageUse to) {
+    imageBarrier(cmd, image, {image.aspect(), mip, 1, 0, VK_REMAINING_ARRAY_LAYERS}, from, to);
+}
+
+void computeWritesVisibleTo(VkCommandBuffer cmd, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, stages, access);
+}
+
+void transferWritesVisibleToShaders(VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT);
+}
+
+}  // namespace dvsgi::gpu

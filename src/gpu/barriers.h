@@ -1,0 +1,56 @@
+// Synchronization2 barriers named by what the next pass does with a resource.
+// A pass states how it leaves an image (ImageUse) and the next pass asks for
+// the use it needs; transition() derives stages, accesses and layouts.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+namespace dvsgi::gpu {
+
+class Image;
+
+struct ImageUse {
+    VkImageLayout layout;
+    VkPipelineStageFlags2 stages;
+    VkAccessFlags2 access;
+};
+
+namespace use {
+inline constexpr ImageUse Undefined{VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE};
+inline constexpr ImageUse ComputeWrite{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+inline constexpr ImageUse ComputeReadWrite{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                           VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+// Sampled or read as storage by compute, fragment or geometry shaders.
+inline constexpr ImageUse ShaderRead{VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT |
+                                         VK_PIPELINE_STAGE_2_GEOMETRY_SHADER_BIT,
+                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+inline constexpr ImageUse ColorAttachment{VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                          VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
+inline constexpr ImageUse DepthAttachment{VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                          VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
+                                              VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+                                          VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT};
+inline constexpr ImageUse DepthRead{VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
+                                    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+inline constexpr ImageUse TransferSrc{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                                      VK_ACCESS_2_TRANSFER_READ_BIT};
+inline constexpr ImageUse TransferDst{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                                      VK_ACCESS_2_TRANSFER_WRITE_BIT};
+}  // namespace use
+
+// Whole image (all mips and layers) from one use to another.
+void transition(VkCommandBuffer cmd, const Image& image, ImageUse from, ImageUse to);
+// One mip level (all layers): for building mip chains level by level.
+void transitionMip(VkCommandBuffer cmd, const Image& image, uint32_t mip, ImageUse from, ImageUse to);
+
+// Makes compute-shader writes to buffers/images visible to the stages given.
+void computeWritesVisibleTo(VkCommandBuffer cmd, VkPipelineStageFlags2 stages, VkAccessFlags2 access);
+// Makes transfer writes (uploads, clears) visible to every shader stage.
+void transferWritesVisibleToShaders(VkCommandBuffer cmd);
+
+}  // namespace dvsgi::gpu

@@ -1,0 +1,340 @@
+#include "gpu/context.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+
+#include "gpu/check.h"
+
+namespace dvsgi::gpu {
+
+const char* resultName(VkResult r) {
+    switch (r) {
+#define DVSGI_RESULT(x) case x: return #x;
+        DVSGI_RESULT(VK_NOT_READY) DVSGI_RESULT(VK_TIMEOUT) DVSGI_RESULT(VK_INCOMPLETE)
+        DVSGI_RESULT(VK_ERROR_OUT_OF_HOST_MEMORY) DVSGI_RESULT(VK_ERROR_OUT_OF_DEVICE_MEMORY)
+        DVSGI_RESULT(VK_ERROR_INITIALIZATION_FAILED) DVSGI_RESULT(VK_ERROR_DEVICE_LOST)
+        DVSGI_RESULT(VK_ERROR_MEMORY_MAP_FAILED) DVSGI_RESULT(VK_ERROR_LAYER_NOT_PRESENT)
+        DVSGI_RESULT(VK_ERROR_EXTENSION_NOT_PRESENT) DVSGI_RESULT(VK_ERROR_FEATURE_NOT_PRESENT)
+        DVSGI_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER) DVSGI_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
+        DVSGI_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED) DVSGI_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
+        DVSGI_RESULT(VK_ERROR_SURFACE_LOST_KHR) DVSGI_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
+        DVSGI_RESULT(VK_SUBOPTIMAL_KHR)
+#undef DVSGI_RESULT
+        default: return "VkResult(other)";
+    }
+}
+
+void throwVkError(const char* call, VkResult r) {
+    std::string what = std::string("Vulkan call failed: ") + call + " returned " + resultName(r);
+    if (r == VK_ERROR_OUT_OF_DEVICE_MEMORY || r == VK_ERROR_OUT_OF_HOST_MEMORY)
+        what += " (out of memory: try fewer voxels or a smaller image)";
+    throw GpuError(what, r);
+}
+
+namespace {
+
+std::mutex g_messageMutex;
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+    return s;
+}
+
+const char* typeName(VkPhysicalDeviceType t) {
+    switch (t) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+        default: return "other";
+    }
+}
+
+int typeRank(VkPhysicalDeviceType t) {
+    switch (t) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+        default: return 0;
+    }
+}
+
+bool hasLayer(const char* name) {
+    uint32_t n = 0;
+    vkEnumerateInstanceLayerProperties(&n, nullptr);
+    std::vector<VkLayerProperties> layers(n);
+    vkEnumerateInstanceLayerProperties(&n, layers.data());
+    return std::any_of(layers.begin(), layers.end(),
+                       [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+bool hasDeviceExtension(VkPhysicalDevice pd, const char* name) {
+    uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> exts(n);
+    vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, exts.data());
+    return std::any_of(exts.begin(), exts.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+    uint32_t n = 0;
+    VK_CHECK(vkEnumeratePhysicalDevices(instance, &n, nullptr));
+    std::vector<VkPhysicalDevice> devices(n);
+    VK_CHECK(vkEnumeratePhysicalDevices(instance, &n, devices.data()));
+    return devices;
+}
+
+}  // namespace
+
+std::vector<std::string> listDevices(VkInstance instance) {
+    std::vector<std::string> out;
+    for (VkPhysicalDevice pd : physicalDevices(instance)) {
+        VkPhysicalDeviceProperties p;
+        vkGetPhysicalDeviceProperties(pd, &p);
+        out.push_back(std::string(p.deviceName) + " (" + typeName(p.deviceType) + ")");
+    }
+    return out;
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL Context::debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                      VkDebugUtilsMessageTypeFlagsEXT,
+                                                      const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                      void* user) {
+    auto* self = static_cast<Context*>(user);
+    const bool error = severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    if (error)
+        self->errors_++;
+    else
+        self->warnings_++;
+    std::lock_guard<std::mutex> lock(g_messageMutex);
+    if (self->messages_.size() < 64) self->messages_.push_back(data->pMessage ? data->pMessage : "");
+    std::fprintf(stderr, "[validation %s] %s\n", error ? "error" : "warning", data->pMessage ? data->pMessage : "");
+    return VK_FALSE;
+}
+
+Context::Context(const ContextOptions& options) {
+    const char* kValidation = "VK_LAYER_KHRONOS_validation";
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions = options.instanceExtensions;
+    if (options.validation) {
+        if (!hasLayer(kValidation))
+            throw GpuError("--validate: the Khronos validation layer is not installed "
+                           "(Debian package vulkan-validationlayers)", VK_ERROR_LAYER_NOT_PRESENT);
+        layers.push_back(kValidation);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "dvsgi";
+    app.pEngineName = "dvsgi";
+    app.apiVersion = VK_API_VERSION_1_3;
+
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messengerInfo.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+    messengerInfo.pfnUserCallback = &Context::debugCallback;
+    messengerInfo.pUserData = this;
+
+    VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    ici.pApplicationInfo = &app;
+    ici.enabledLayerCount = uint32_t(layers.size());
+    ici.ppEnabledLayerNames = layers.data();
+    ici.enabledExtensionCount = uint32_t(extensions.size());
+    ici.ppEnabledExtensionNames = extensions.data();
+    if (options.validation) ici.pNext = &messengerInfo;  // also catches instance creation issues
+    VkResult r = vkCreateInstance(&ici, nullptr, &instance);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw GpuError("no Vulkan 1.3 driver found (install mesa-vulkan-drivers for the software driver)", r);
+    VK_CHECK(r);
+
+    if (options.validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+        VK_CHECK(create(instance, &messengerInfo, nullptr, &messenger_));
+    }
+
+    // Pick the device: a named one if asked, else the best type that speaks 1.3.
+    std::vector<VkPhysicalDevice> candidates = physicalDevices(instance);
+    if (candidates.empty()) throw GpuError("no Vulkan device found (install mesa-vulkan-drivers)", VK_ERROR_INITIALIZATION_FAILED);
+    int bestRank = -1;
+    for (VkPhysicalDevice pd : candidates) {
+        VkPhysicalDeviceProperties p;
+        vkGetPhysicalDeviceProperties(pd, &p);
+        if (p.apiVersion < VK_API_VERSION_1_3) continue;
+        if (!options.deviceName.empty() && lower(p.deviceName).find(lower(options.deviceName)) == std::string::npos)
+            continue;
+        if (typeRank(p.deviceType) > bestRank) {
+            bestRank = typeRank(p.deviceType);
+            physical = pd;
+        }
+    }
+    if (physical == VK_NULL_HANDLE) {
+        std::string names;
+        for (const std::string& n : listDevices(instance)) names += (names.empty() ? "" : ", ") + n;
+        throw GpuError(options.deviceName.empty()
+                           ? "no Vulkan 1.3 device found; devices: " + names
+                           : "--device: no Vulkan 1.3 device matches '" + options.deviceName + "'; devices: " + names,
+                       VK_ERROR_INITIALIZATION_FAILED);
+    }
+    vkGetPhysicalDeviceProperties(physical, &properties);
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+    deviceName = properties.deviceName;
+
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
+    queueFamily = UINT32_MAX;
+    for (uint32_t i = 0; i < familyCount; ++i) {
+        const VkQueueFlags want = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & want) == want && families[i].timestampValidBits > 0) {
+            queueFamily = i;
+            break;
+        }
+    }
+    if (queueFamily == UINT32_MAX)
+        throw GpuError(deviceName + ": no graphics+compute queue with timestamps", VK_ERROR_FEATURE_NOT_PRESENT);
+
+    // Features: check what we need, enable optional ones the device has.
+    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicFloat{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    const bool hasAtomicFloat = hasDeviceExtension(physical, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
+    f2.pNext = &f11;
+    f11.pNext = &f12;
+    f12.pNext = &f13;
+    if (hasAtomicFloat) f13.pNext = &atomicFloat;
+    vkGetPhysicalDeviceFeatures2(physical, &f2);
+
+    struct Need { const char* name; VkBool32 have; };
+    const Need needs[] = {
+        {"geometryShader", f2.features.geometryShader},
+        {"fragmentStoresAndAtomics", f2.features.fragmentStoresAndAtomics},
+        {"vertexPipelineStoresAndAtomics", f2.features.vertexPipelineStoresAndAtomics},
+        {"shaderDrawParameters", f11.shaderDrawParameters},
+        {"hostQueryReset", f12.hostQueryReset},
+        {"dynamicRendering", f13.dynamicRendering},
+        {"synchronization2", f13.synchronization2},
+        {"maintenance4", f13.maintenance4},
+    };
+    for (const Need& n : needs)
+        if (!n.have)
+            throw GpuError(deviceName + " lacks the Vulkan feature " + n.name + " that dvsgi needs",
+                           VK_ERROR_FEATURE_NOT_PRESENT);
+    std::vector<const char*> deviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    if (!hasDeviceExtension(physical, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+        throw GpuError(deviceName + " lacks VK_KHR_push_descriptor that dvsgi needs", VK_ERROR_EXTENSION_NOT_PRESENT);
+    if (options.swapchain) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    features.atomicFloat = hasAtomicFloat && atomicFloat.shaderImageFloat32AtomicAdd;
+    if (features.atomicFloat) deviceExtensions.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
+    features.conservativeRaster = hasDeviceExtension(physical, VK_EXT_CONSERVATIVE_RASTERIZATION_EXTENSION_NAME);
+    if (features.conservativeRaster) deviceExtensions.push_back(VK_EXT_CONSERVATIVE_RASTERIZATION_EXTENSION_NAME);
+
+    // Enable exactly what the shaders use, not everything the device offers.
+    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicOn{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+    atomicOn.shaderImageFloat32Atomics = features.atomicFloat;
+    atomicOn.shaderImageFloat32AtomicAdd = features.atomicFloat;
+    VkPhysicalDeviceVulkan13Features on13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    on13.dynamicRendering = VK_TRUE;
+    on13.synchronization2 = VK_TRUE;
+    on13.maintenance4 = VK_TRUE;
+    if (features.atomicFloat) on13.pNext = &atomicOn;
+    VkPhysicalDeviceVulkan12Features on12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    on12.hostQueryReset = VK_TRUE;
+    on12.pNext = &on13;
+    VkPhysicalDeviceVulkan11Features on11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    on11.shaderDrawParameters = VK_TRUE;
+    on11.pNext = &on12;
+    VkPhysicalDeviceFeatures2 on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    on.pNext = &on11;
+    on.features.geometryShader = VK_TRUE;
+    on.features.fragmentStoresAndAtomics = VK_TRUE;
+    on.features.vertexPipelineStoresAndAtomics = VK_TRUE;
+    on.features.samplerAnisotropy = f2.features.samplerAnisotropy;
+    on.features.multiDrawIndirect = f2.features.multiDrawIndirect;
+
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    qci.queueFamilyIndex = queueFamily;
+    qci.queueCount = 1;
+    qci.pQueuePriorities = &priority;
+    VkDeviceCreateInfo dci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    dci.pNext = &on;
+    dci.queueCreateInfoCount = 1;
+    dci.pQueueCreateInfos = &qci;
+    dci.enabledExtensionCount = uint32_t(deviceExtensions.size());
+    dci.ppEnabledExtensionNames = deviceExtensions.data();
+    VK_CHECK(vkCreateDevice(physical, &dci, nullptr, &device));
+    vkGetDeviceQueue(device, queueFamily, 0, &queue);
+
+    cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(device, "vkCmdPushDescriptorSetKHR"));
+
+    VkCommandPoolCreateInfo cpi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    cpi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    cpi.queueFamilyIndex = queueFamily;
+    VK_CHECK(vkCreateCommandPool(device, &cpi, nullptr, &commandPool));
+
+    if (options.printDevice)
+        std::printf("device: %s (%s)%s\n", deviceName.c_str(), typeName(properties.deviceType),
+                    options.validation ? ", validation on" : "");
+}
+
+Context::~Context() {
+    if (device) {
+        vkDeviceWaitIdle(device);
+        vkDestroyCommandPool(device, commandPool, nullptr);
+        vkDestroyDevice(device, nullptr);
+    }
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        destroy(instance, messenger_, nullptr);
+    }
+    if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const {
+    for (uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+        if ((typeBits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & flags) == flags) return i;
+    throw GpuError("no Vulkan memory type with the required properties", VK_ERROR_FEATURE_NOT_PRESENT);
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = commandPool;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = 1;
+    VkCommandBuffer cmd;
+    VK_CHECK(vkAllocateCommandBuffers(device, &ai, &cmd));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    record(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    VK_CHECK(vkCreateFence(device, &fi, nullptr, &fence));
+    VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cbi.commandBuffer = cmd;
+    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    si.commandBufferInfoCount = 1;
+    si.pCommandBufferInfos = &cbi;
+    VkResult r = vkQueueSubmit2(queue, 1, &si, fence);
+    if (r == VK_SUCCESS) r = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+    vkDestroyFence(device, fence, nullptr);
+    vkFreeCommandBuffers(device, commandPool, 1, &cmd);
+    VK_CHECK(r);
+}
+
+}  // namespace dvsgi::gpu

@@ -1,0 +1,111 @@
+// Move-only owners of Vulkan memory objects. Each owns its memory allocation
+// (one allocation per resource keeps ownership obvious; the renderer creates few,
+// large resources, far below maxMemoryAllocationCount).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace dvsgi::gpu {
+
+class Context;
+
+enum class MemoryUse { Device, Upload, Readback };
+
+class Buffer {
+public:
+    Buffer() = default;
+    Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use, const char* name);
+    ~Buffer() { reset(); }
+    Buffer(Buffer&& o) noexcept { *this = std::move(o); }
+    Buffer& operator=(Buffer&& o) noexcept;
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+
+    VkBuffer handle() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    void* mapped() const { return mapped_; }  // non-null for Upload/Readback
+    explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+    void reset();
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+};
+
+struct ImageDesc {
+    VkImageType type = VK_IMAGE_TYPE_2D;
+    VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
+    VkExtent3D extent{1, 1, 1};
+    uint32_t mipLevels = 1;
+    uint32_t layers = 1;
+    VkImageUsageFlags usage = 0;
+    const char* name = "image";
+};
+
+class Image {
+public:
+    Image() = default;
+    Image(const Context& ctx, const ImageDesc& desc);
+    ~Image() { reset(); }
+    Image(Image&& o) noexcept { *this = std::move(o); }
+    Image& operator=(Image&& o) noexcept;
+    Image(const Image&) = delete;
+    Image& operator=(const Image&) = delete;
+
+    VkImage handle() const { return image_; }
+    VkImageView view() const { return view_; }  // all mips and layers
+    VkImageView mipView(uint32_t mip) const { return mipViews_.at(mip); }       // one mip, all layers
+    VkImageView layerView(uint32_t layer) const { return layerViews_.at(layer); } // one layer, mip 0 (2D)
+    const ImageDesc& desc() const { return desc_; }
+    VkImageAspectFlags aspect() const;
+    VkDeviceSize memorySize() const { return memorySize_; }
+    explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
+    void reset();
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize memorySize_ = 0;
+    VkImageView view_ = VK_NULL_HANDLE;
+    std::vector<VkImageView> mipViews_;
+    std::vector<VkImageView> layerViews_;
+    ImageDesc desc_;
+};
+
+struct SamplerDesc {
+    VkFilter filter = VK_FILTER_LINEAR;
+    VkSamplerMipmapMode mipmap = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    VkSamplerAddressMode address = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    bool compare = false;  // depth comparison (shadow maps)
+    float maxAnisotropy = 1.0f;
+};
+
+class Sampler {
+public:
+    Sampler() = default;
+    Sampler(const Context& ctx, const SamplerDesc& desc);
+    ~Sampler() { reset(); }
+    Sampler(Sampler&& o) noexcept { *this = std::move(o); }
+    Sampler& operator=(Sampler&& o) noexcept;
+    Sampler(const Sampler&) = delete;
+    Sampler& operator=(const Sampler&) = delete;
+    VkSampler handle() const { return sampler_; }
+    void reset();
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+};
+
+bool isDepthFormat(VkFormat f);
+
+}  // namespace dvsgi::gpu

@@ -1,0 +1,67 @@
+#include "render/lighting.h"
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/timers.h"
+#include "render/gbuffer.h"
+#include "render/shadows.h"
+#include "shared/bindings.h"
+
+namespace dvsgi::render {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+const uint32_t kComp[] = {
+#include "shaders/lighting.comp.inc"
+};
+
+}  // namespace
+
+LightingPass::LightingPass(const gpu::Context& ctx, uint32_t width, uint32_t height)
+    : ctx_(ctx), width_(width), height_(height) {
+    gpu::ImageDesc d;
+    d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    d.extent = {width, height, 1};
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    d.name = "direct radiance";
+    direct = gpu::Image(ctx, d);
+
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    gpu::LayoutDesc layout;
+    layout.bindings = {{sh::BIND_LIGHT_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                       {sh::BIND_LIGHT_GBUF_BASE, sampled, cs},
+                       {sh::BIND_LIGHT_GBUF_NORMAL, sampled, cs},
+                       {sh::BIND_LIGHT_GBUF_EMISSION, sampled, cs},
+                       {sh::BIND_LIGHT_DEPTH, sampled, cs},
+                       {sh::BIND_LIGHT_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_LIGHT_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_LIGHT_SHADOW_MAP, sampled, cs},
+                       {sh::BIND_LIGHT_OUT_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "lighting");
+}
+
+void LightingPass::record(VkCommandBuffer cmd, const GBufferPass& g, const ShadowPass& shadows,
+                          const gpu::Buffer& frame, const gpu::Buffer& lights, const gpu::Buffer& views,
+                          gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "direct lighting");
+    gpu::transition(cmd, direct, gpu::use::Undefined, gpu::use::ComputeWrite);
+    gpu::bind(cmd, pipeline_);
+    const VkSampler point = g.pointSampler.handle();
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_LIGHT_FRAME, frame.handle())
+        .sampledImage(sh::BIND_LIGHT_GBUF_BASE, g.base.view(), point)
+        .sampledImage(sh::BIND_LIGHT_GBUF_NORMAL, g.normal.view(), point)
+        .sampledImage(sh::BIND_LIGHT_GBUF_EMISSION, g.emission.view(), point)
+        .sampledImage(sh::BIND_LIGHT_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+        .storageBuffer(sh::BIND_LIGHT_LIGHTS, lights.handle())
+        .storageBuffer(sh::BIND_LIGHT_SHADOW_VIEWS, views.handle())
+        .sampledImage(sh::BIND_LIGHT_SHADOW_MAP, shadows.map().view(), shadows.sampler().handle())
+        .storageImage(sh::BIND_LIGHT_OUT_DIRECT, direct.view())
+        .push(ctx_, cmd, pipeline_);
+    vkCmdDispatch(cmd, gpu::groupCount(width_, 8), gpu::groupCount(height_, 8), 1);
+}
+
+}  // namespace dvsgi::render

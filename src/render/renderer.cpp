@@ -1,0 +1,128 @@
+#include "render/renderer.h"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/transfer.h"
+#include "render/composite.h"
+#include "render/gbuffer.h"
+#include "render/lighting.h"
+#include "render/scene_gpu.h"
+#include "render/shadows.h"
+#include "shared/scene_data.h"
+
+namespace dvsgi::render {
+
+namespace sh = dvsgi::shader;
+
+glm::mat4 viewMatrix(const scene::PlacedCamera& camera) { return glm::inverse(camera.world); }
+
+glm::mat4 projectionMatrix(const scene::PlacedCamera& camera, uint32_t width, uint32_t height) {
+    const float aspect = float(width) / float(height);
+    glm::mat4 p = glm::perspective(camera.camera.yfov, aspect, camera.camera.znear, camera.camera.zfar);
+    p[1][1] *= -1.0f;
+    return p;
+}
+
+Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, const RenderSettings& settings)
+    : ctx_(ctx), scene_(scene), settings_(settings) {
+    const std::vector<glm::mat4> world = scene::worldMatrices(scene);
+    const std::vector<scene::PlacedCamera> cameras = scene::placedCameras(scene, world);
+    if (cameras.empty()) throw std::runtime_error(scene.source + ": the scene has no camera");
+    if (settings.camera < 0 || size_t(settings.camera) >= cameras.size())
+        throw std::runtime_error("--camera: " + std::to_string(settings.camera) + " is out of range; " + scene.source +
+                                 " has " + std::to_string(cameras.size()) + " camera(s)");
+    camera_ = cameras[size_t(settings.camera)];
+    const float aspect = float(settings.width) / float(settings.height);
+    if (camera_.camera.aspectRatio > 0.0f && std::abs(camera_.camera.aspectRatio - aspect) > 1e-3f * aspect)
+        warnings_.push_back("camera '" + camera_.camera.name + "' has aspectRatio " +
+                            std::to_string(camera_.camera.aspectRatio) + " but the image is " +
+                            std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                            "; the horizontal field of view follows the image");
+
+    const uint32_t iw = settings.width * settings.supersample, ih = settings.height * settings.supersample;
+    sceneGpu_ = std::make_unique<SceneGpu>(ctx, scene);
+    const LightSetup setup = setupLights(scene::placedLights(scene, world), sceneGpu_->bounds, settings.shadowMapSize,
+                                         settings.shadows);
+    lightCount_ = uint32_t(setup.lights.size());
+    viewCount_ = uint32_t(setup.views.size());
+    lights_ = std::make_unique<gpu::Buffer>(gpu::createBuffer(ctx, setup.lights.data(),
+                                                              setup.lights.size() * sizeof(sh::GpuLight),
+                                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights"));
+    views_ = std::make_unique<gpu::Buffer>(gpu::createBuffer(ctx, setup.views.data(),
+                                                             setup.views.size() * sizeof(sh::GpuShadowView),
+                                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "shadow views"));
+    frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),
+                                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                           gpu::MemoryUse::Device, "frame constants");
+    shadows_ = std::make_unique<ShadowPass>(ctx, *sceneGpu_, settings.shadowMapSize, viewCount_);
+    gbuffer_ = std::make_unique<GBufferPass>(ctx, *sceneGpu_, iw, ih);
+    lighting_ = std::make_unique<LightingPass>(ctx, iw, ih);
+    composite_ = std::make_unique<CompositePass>(ctx, settings.width, settings.height, settings.supersample);
+    timers_ = std::make_unique<gpu::GpuTimers>(ctx);
+    updateFrameConstants();
+}
+
+Renderer::~Renderer() = default;
+
+uint64_t Renderer::triangleCount() const { return sceneGpu_->triangleCount; }
+
+void Renderer::updateFrameConstants() {
+    const uint32_t iw = settings_.width * settings_.supersample, ih = settings_.height * settings_.supersample;
+    sh::FrameConstants f{};
+    f.viewProj = projectionMatrix(camera_, iw, ih) * viewMatrix(camera_);
+    f.invViewProj = glm::inverse(f.viewProj);
+    f.cameraPos = glm::vec4(glm::vec3(camera_.world[3]), 1.0f);
+    f.sizes = glm::uvec4(iw, ih, lightCount_, settings_.shadowMapSize);
+    f.shadowParams = glm::vec4(settings_.normalOffsetTexels, settings_.shadows ? 1.0f : 0.0f, 0.0f, 0.0f);
+    gpu::uploadBuffer(ctx_, *frame_, &f, sizeof(f));
+}
+
+FrameStats Renderer::renderFrame() {
+    timers_->reset();
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        gpu::GpuTimerScope total(timers_.get(), cmd, "frame");
+        shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, timers_.get());
+        gbuffer_->record(cmd, *sceneGpu_, *frame_, timers_.get());
+        lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, timers_.get());
+        composite_->record(cmd, lighting_->direct, timers_.get());
+    });
+    FrameStats stats;
+    for (const gpu::TimerResult& r : timers_->results()) {
+        if (r.name == "frame")
+            stats.gpuMs = r.ms;
+        else
+            stats.passes.push_back(r);
+    }
+    return stats;
+}
+
+image::ImageRGBA32F Renderer::readOutput() const {
+    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx_, composite_->output, gpu::use::ComputeWrite);
+    image::ImageRGBA32F img;
+    img.width = settings_.width;
+    img.height = settings_.height;
+    img.rgba.resize(size_t(img.width) * img.height * 4);
+    std::memcpy(img.rgba.data(), bytes.data(), img.rgba.size() * sizeof(float));
+    return img;
+}
+
+std::vector<MemoryItem> Renderer::memory() const {
+    uint64_t textures = 0;
+    for (const gpu::Image& t : sceneGpu_->textures) textures += t.memorySize();
+    return {
+        {"geometry buffers", sceneGpu_->vertices.size() + sceneGpu_->indices.size() + sceneGpu_->draws.size()},
+        {"textures", textures},
+        {"shadow maps", shadows_->memoryBytes()},
+        {"g-buffer", gbuffer_->memoryBytes()},
+        {"direct radiance", lighting_->direct.memorySize()},
+        {"output", composite_->output.memorySize()},
+    };
+}
+
+}  // namespace dvsgi::render

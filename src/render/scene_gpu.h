@@ -1,0 +1,40 @@
+// The scene as the GPU sees it: merged vertex and index buffers, one GpuDraw
+// per placed primitive, the material table and the texture table.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "gpu/resources.h"
+#include "gpu/texture_table.h"
+#include "scene/scene.h"
+
+namespace dvsgi::render {
+
+struct DrawRange {
+    uint32_t firstIndex;
+    uint32_t indexCount;
+    int32_t vertexOffset;
+};
+
+class SceneGpu {
+public:
+    SceneGpu(const gpu::Context& ctx, const scene::Scene& scene);
+
+    // Re-uploads the per-draw transforms (after animation). Blocks.
+    void updateDraws(const gpu::Context& ctx, const scene::Scene& scene, const std::vector<scene::DrawItem>& items);
+
+    gpu::Buffer vertices, indices, draws, materials;
+    std::vector<DrawRange> ranges;  // per draw (index into `draws`)
+    std::vector<gpu::Image> textures;
+    gpu::Image fallbackTexture;
+    gpu::Sampler sampler;
+    std::unique_ptr<gpu::TextureTable> textureTable;
+    scene::Bounds bounds;
+    uint64_t triangleCount = 0;
+
+private:
+    std::vector<DrawRange> primitiveRanges_;  // per scene primitive
+};
+
+}  // namespace dvsgi::render

@@ -1,0 +1,161 @@
+#include "render/shadows.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/timers.h"
+#include "render/scene_gpu.h"
+#include "shared/bindings.h"
+#include "shared/push.h"
+
+namespace dvsgi::render {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+const uint32_t kShadowVert[] = {
+#include "shaders/shadow.vert.inc"
+};
+const uint32_t kShadowFrag[] = {
+#include "shaders/shadow.frag.inc"
+};
+
+glm::vec3 upFor(glm::vec3 dir) {
+    return std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+}
+
+sh::GpuShadowView perspectiveView(glm::vec3 eye, glm::vec3 dir, float fov, float nearZ, float farZ, uint32_t size) {
+    sh::GpuShadowView v{};
+    v.viewProj = glm::perspective(fov, 1.0f, nearZ, farZ) * glm::lookAt(eye, eye + dir, upFor(dir));
+    v.params = glm::vec4(2.0f * std::tan(fov * 0.5f) / float(size), 1.0f, 0.0f, 0.0f);
+    return v;
+}
+
+}  // namespace
+
+LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,
+                       uint32_t shadowMapSize, bool shadows) {
+    LightSetup out;
+    const glm::vec3 center = bounds.valid() ? (bounds.min + bounds.max) * 0.5f : glm::vec3(0.0f);
+    const float radius = bounds.valid() ? std::max(glm::length(bounds.max - bounds.min) * 0.5f, 1e-3f) : 1.0f;
+    for (const scene::PlacedLight& pl : lights) {
+        const scene::Light& l = pl.light;
+        sh::GpuLight g{};
+        g.position = glm::vec4(pl.position, float(uint32_t(l.type)));
+        g.direction = glm::vec4(glm::normalize(pl.direction), std::cos(l.outerConeAngle));
+        g.radiant = glm::vec4(l.color * l.intensity, std::cos(l.innerConeAngle));
+        g.shadow = glm::uvec4(uint32_t(out.views.size()), 0u, 0u, 0u);
+        if (shadows && bounds.valid()) {
+            const glm::vec3 dir = glm::vec3(g.direction);
+            // Depth range: from just in front of the light to the far side of the scene.
+            const float farZ = glm::length(pl.position - center) + radius * 1.01f;
+            const float nearZ = std::max(radius * 2e-3f, 1e-4f);
+            if (l.type == scene::LightType::Directional) {
+                sh::GpuShadowView v{};
+                const glm::vec3 eye = center - dir * (2.0f * radius);
+                v.viewProj = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) *
+                             glm::lookAt(eye, center, upFor(dir));
+                v.params = glm::vec4(2.0f * radius / float(shadowMapSize), 0.0f, 0.0f, 0.0f);
+                out.views.push_back(v);
+                g.shadow.y = 1;
+            } else if (l.type == scene::LightType::Spot) {
+                const float fov = std::min(2.0f * l.outerConeAngle * 1.05f, glm::radians(170.0f));
+                out.views.push_back(perspectiveView(pl.position, dir, fov, nearZ, farZ, shadowMapSize));
+                g.shadow.y = 1;
+            } else {
+                const glm::vec3 faces[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+                for (const glm::vec3& f : faces)
+                    out.views.push_back(perspectiveView(pl.position, f, glm::radians(90.0f), nearZ, farZ, shadowMapSize));
+                g.shadow.y = 6;
+            }
+        }
+        out.lights.push_back(g);
+    }
+    return out;
+}
+
+ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t size, uint32_t viewCount)
+    : ctx_(ctx), size_(size) {
+    gpu::ImageDesc d;
+    d.format = VK_FORMAT_D32_SFLOAT;
+    d.extent = {size, size, 1};
+    d.layers = std::max(viewCount, 2u);  // always an array view, even for one light
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    d.name = "shadow map array";
+    map_ = gpu::Image(ctx, d);
+
+    gpu::SamplerDesc sd;
+    sd.compare = true;
+    sd.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler_ = gpu::Sampler(ctx, sd);
+
+    gpu::GraphicsDesc g;
+    g.vertex = kShadowVert;
+    g.fragment = kShadowFrag;
+    g.depthFormat = VK_FORMAT_D32_SFLOAT;
+    g.depthBias = true;
+    gpu::LayoutDesc layout;
+    const VkShaderStageFlags vs = VK_SHADER_STAGE_VERTEX_BIT, fs = VK_SHADER_STAGE_FRAGMENT_BIT;
+    layout.bindings = {{sh::BIND_GEOM_DRAWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vs},
+                       {sh::BIND_GEOM_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, fs},
+                       {sh::BIND_GEOM_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vs}};
+    layout.extraSet = scene.textureTable->layout();
+    layout.pushConstantBytes = sizeof(sh::DrawPush);
+    layout.pushConstantStages = vs;
+    pipeline_ = gpu::Pipeline(ctx, g, layout, "shadow");
+}
+
+void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Buffer& views, uint32_t viewCount,
+                        gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
+    gpu::transition(cmd, map_, gpu::use::Undefined, gpu::use::DepthAttachment);
+    gpu::bind(cmd, pipeline_);
+    gpu::Descriptors()
+        .storageBuffer(sh::BIND_GEOM_DRAWS, scene.draws.handle())
+        .storageBuffer(sh::BIND_GEOM_MATERIALS, scene.materials.handle())
+        .storageBuffer(sh::BIND_GEOM_SHADOW_VIEWS, views.handle())
+        .push(ctx_, cmd, pipeline_);
+    VkDescriptorSet set = scene.textureTable->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), sh::SET_TEXTURES, 1, &set, 0,
+                            nullptr);
+    VkDeviceSize offset = 0;
+    VkBuffer vb = scene.vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    vkCmdBindIndexBuffer(cmd, scene.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    const VkViewport viewport{0, 0, float(size_), float(size_), 0, 1};
+    const VkRect2D scissor{{0, 0}, {size_, size_}};
+    // Slope-scaled bias handles grazing angles; the normal offset at lookup does the rest.
+    vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
+
+    for (uint32_t v = 0; v < viewCount; ++v) {
+        VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        depth.imageView = map_.layerView(v);
+        depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        depth.clearValue.depthStencil = {1.0f, 0};
+        VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        ri.renderArea = scissor;
+        ri.layerCount = 1;
+        ri.pDepthAttachment = &depth;
+        vkCmdBeginRendering(cmd, &ri);
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
+            const sh::DrawPush push{glm::uvec4(i, v, 0, 0)};
+            gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_VERTEX_BIT, push);
+            const DrawRange& r = scene.ranges[i];
+            vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
+        }
+        vkCmdEndRendering(cmd);
+    }
+    gpu::transition(cmd, map_, gpu::use::DepthAttachment, gpu::use::ShaderRead);
+}
+
+}  // namespace dvsgi::render
