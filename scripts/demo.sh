@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The main job: install what is missing, build, and render the built-in default
+# scene (the Cornell box) into out/. Reads nothing from ../shared.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DDVSGI_BUILD_TESTS=OFF
+cmake --build build --target dvsgi
+mkdir -p out
+./build/dvsgi render --width 512 --height 512 --supersample 2 \
+  --out out/cornell.exr --png out/cornell.png --metrics out/cornell-metrics.json

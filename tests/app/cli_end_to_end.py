@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""End-to-end checks of the dvsgi executable: bad input gives one clear line
+naming the file or option and a non-zero exit; good input writes EXR, PNG and
+metrics. Usage: cli_end_to_end.py path/to/dvsgi"""
+import base64, json, os, struct, subprocess, sys, tempfile
+
+DVSGI = sys.argv[1]
+TMP = tempfile.mkdtemp(prefix="dvsgi-cli-")
+failures = []
+checks = 0
+
+
+def run(*args):
+    p = subprocess.run([DVSGI, *args], capture_output=True, text=True, timeout=120)
+    return p.returncode, p.stdout, p.stderr
+
+
+def expect_error(name, args, must_contain):
+    global checks
+    checks += 1
+    rc, out, err = run(*args)
+    lines = [l for l in err.splitlines() if l.strip()]
+    ok = rc != 0 and len(lines) == 1 and must_contain in lines[0] and "Segmentation" not in err
+    print("%-34s rc=%d  %s" % (name, rc, lines[0] if lines else "<no message>"))
+    if not ok:
+        failures.append("%s: rc=%d stderr=%r (wanted one line containing %r)" % (name, rc, err, must_contain))
+
+
+def tmpfile(name, content):
+    path = os.path.join(TMP, name)
+    with open(path, "w" if isinstance(content, str) else "wb") as f:
+        f.write(content)
+    return path
+
+
+def triangle_gltf(image_uri=None):
+    """A one-triangle glTF with a camera and a sun, buffer in a data URI."""
+    pos = struct.pack("<9f", -1, 0, -1, 1, 0, -1, 0, 0, 1)
+    uri = "data:application/octet-stream;base64," + base64.b64encode(pos).decode()
+    g = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}], "buffers": [{"uri": uri, "byteLength": len(pos)}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(pos)}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                       "min": [-1, 0, -1], "max": [1, 0, 1]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.5, 0.5, 1]}}],
+    }
+    if image_uri:
+        g["images"] = [{"uri": image_uri}]
+        g["textures"] = [{"source": 0}]
+        g["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+    return json.dumps(g)
+
+
+out = os.path.join(TMP, "o.exr")
+expect_error("missing scene file", ["render", os.path.join(TMP, "nope.gltf"), "--out", out], "nope.gltf")
+expect_error("unsupported format", ["render", tmpfile("model.fbx", "x"), "--out", out], "model.fbx")
+expect_error("malformed glTF", ["render", tmpfile("bad.gltf", "{ not json"), "--out", out], "bad.gltf")
+expect_error("truncated glb", ["render", tmpfile("bad.glb", b"glTF\x02\x00"), "--out", out], "bad.glb")
+expect_error("bad --width", ["render", "--width", "abc"], "--width")
+expect_error("absurd --width", ["render", "--width", "100000"], "--width")
+expect_error("bad --supersample", ["render", "--supersample", "0"], "--supersample")
+expect_error("unknown option", ["render", "--frobnicate"], "--frobnicate")
+expect_error("camera out of range", ["render", "--camera", "7", "--width", "8", "--height", "8", "--out", out], "--camera")
+expect_error("unknown device", ["render", "--device", "no-such-gpu", "--out", out], "--device")
+expect_error("unwritable output", ["render", "--width", "8", "--height", "8", "--out", "/proc/forbidden/x.exr"],
+             "/proc/forbidden/x.exr")
+
+# A missing texture falls back to the factor, with a warning naming the file.
+checks += 3  # missing texture, default render + outputs, --help
+scene = tmpfile("tex.gltf", triangle_gltf("missing_albedo.png"))
+rc, so, se = run("render", scene, "--width", "16", "--height", "16", "--out", out, "--validate", "--quiet")
+print("%-34s rc=%d  %s" % ("missing texture", rc, se.strip()))
+if rc != 0 or "missing_albedo.png" not in se:
+    failures.append("missing texture: rc=%d stderr=%r" % (rc, se))
+
+# The default scene renders, writes EXR + PNG + metrics, with zero validation errors.
+metrics = os.path.join(TMP, "m.json")
+png = os.path.join(TMP, "o.png")
+rc, so, se = run("render", "--width", "64", "--height", "64", "--out", out, "--png", png, "--metrics", metrics,
+                 "--validate")
+print(so)
+if rc != 0:
+    failures.append("default render failed: rc=%d %s" % (rc, se))
+else:
+    m = json.load(open(metrics))
+    names = [p["name"] for p in m["passes"]]
+    for want in ("shadow maps", "gbuffer", "direct lighting", "composite"):
+        if want not in names:
+            failures.append("metrics lacks pass %r: %s" % (want, names))
+    if m["validation_errors"] != 0 or m["scene"] != "builtin:cornell":
+        failures.append("metrics: %r" % m)
+    if not (os.path.getsize(out) > 1000 and os.path.getsize(png) > 100):
+        failures.append("EXR/PNG missing or too small")
+    if "shadow maps" not in so or "GPU ms" not in so:
+        failures.append("no timing table on stdout")
+
+rc, so, _ = run("--help")
+for opt in ("--out", "--png", "--width", "--height", "--camera", "--exposure", "--metrics", "--device", "--validate"):
+    if opt not in so:
+        failures.append("--help does not document " + opt)
+
+print("\n".join("FAIL " + f for f in failures))
+print("%d passed, %d failed" % (max(checks - len(failures), 0), len(failures)))
+sys.exit(1 if failures else 0)

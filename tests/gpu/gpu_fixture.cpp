@@ -1,0 +1,107 @@
+#include "gpu_fixture.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/quaternion.hpp>
+
+namespace dvsgi::test {
+
+gpu::Context& context() {
+    static std::unique_ptr<gpu::Context> ctx = [] {
+        gpu::ContextOptions o;
+        o.validation = true;
+        return std::make_unique<gpu::Context>(o);
+    }();
+    return *ctx;
+}
+
+int addMaterial(scene::Scene& s, glm::vec3 albedo, glm::vec3 emission, bool doubleSided) {
+    scene::Material m;
+    m.name = "m" + std::to_string(s.materials.size());
+    m.baseColorFactor = glm::vec4(albedo, 1.0f);
+    m.emissiveFactor = emission;
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 1.0f;
+    m.doubleSided = doubleSided;
+    s.materials.push_back(m);
+    return int(s.materials.size() - 1);
+}
+
+int addQuad(scene::Scene& s, int material, glm::vec3 center, float h, glm::quat rotation) {
+    scene::Primitive p;
+    const glm::vec3 corners[4] = {{-h, 0, -h}, {-h, 0, h}, {h, 0, h}, {h, 0, -h}};  // CCW seen from +Y
+    for (const glm::vec3& c : corners) {
+        scene::Vertex v;
+        v.position = c;
+        v.normal = glm::vec3(0, 1, 0);
+        v.uv = glm::vec2(c.x / (2 * h) + 0.5f, c.z / (2 * h) + 0.5f);
+        p.vertices.push_back(v);
+    }
+    p.indices = {0, 1, 2, 0, 2, 3};
+    p.material = uint32_t(material);
+    s.primitives.push_back(p);
+    scene::Mesh mesh;
+    mesh.primitives = {uint32_t(s.primitives.size() - 1)};
+    s.meshes.push_back(mesh);
+    scene::Node n;
+    n.name = "quad" + std::to_string(s.nodes.size());
+    n.mesh = int(s.meshes.size() - 1);
+    n.translation = center;
+    n.rotation = rotation;
+    s.nodes.push_back(n);
+    s.roots.push_back(int(s.nodes.size() - 1));
+    return int(s.nodes.size() - 1);
+}
+
+void addTopDownCamera(scene::Scene& s, float height, float yfov) {
+    scene::Camera c;
+    c.name = "top";
+    c.yfov = yfov;
+    c.znear = 0.01f;
+    c.zfar = 100.0f;
+    s.cameras.push_back(c);
+    scene::Node n;
+    n.name = "camera";
+    n.camera = int(s.cameras.size() - 1);
+    n.translation = glm::vec3(0, height, 0);
+    n.rotation = glm::angleAxis(-glm::half_pi<float>(), glm::vec3(1, 0, 0));  // -Z looks down -Y
+    s.nodes.push_back(n);
+    s.roots.push_back(int(s.nodes.size() - 1));
+}
+
+void addLight(scene::Scene& s, scene::Light light, glm::vec3 position, glm::vec3 direction) {
+    s.lights.push_back(light);
+    scene::Node n;
+    n.name = light.name;
+    n.light = int(s.lights.size() - 1);
+    n.translation = position;
+    // Rotate the node's -Z onto `direction`.
+    const glm::vec3 from(0, 0, -1), to = glm::normalize(direction);
+    const float c = glm::dot(from, to);
+    if (c < -0.9999f)
+        n.rotation = glm::angleAxis(glm::pi<float>(), glm::vec3(0, 1, 0));
+    else
+        n.rotation = glm::rotation(from, to);
+    s.nodes.push_back(n);
+    s.roots.push_back(int(s.nodes.size() - 1));
+}
+
+image::ImageRGBA32F render(const scene::Scene& s, const render::RenderSettings& settings) {
+    render::Renderer r(context(), s, settings);
+    r.renderFrame();
+    return r.readOutput();
+}
+
+glm::vec3 pixelOnPlane(const scene::Scene& s, const render::RenderSettings& settings, uint32_t x, uint32_t y,
+                       float planeY) {
+    const std::vector<glm::mat4> world = scene::worldMatrices(s);
+    const scene::PlacedCamera cam = scene::placedCameras(s, world).at(size_t(settings.camera));
+    const glm::mat4 inv = glm::inverse(render::projectionMatrix(cam, settings.width, settings.height) *
+                                       render::viewMatrix(cam));
+    const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(settings.width, settings.height) * 2.0f - 1.0f;
+    glm::vec4 a = inv * glm::vec4(ndc, 0.0f, 1.0f), b = inv * glm::vec4(ndc, 1.0f, 1.0f);
+    const glm::vec3 p0 = glm::vec3(a) / a.w, p1 = glm::vec3(b) / b.w;
+    const float t = (planeY - p0.y) / (p1.y - p0.y);
+    return p0 + (p1 - p0) * t;
+}
+
+}  // namespace dvsgi::test
