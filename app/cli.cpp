@@ -1,0 +1,266 @@
+#include "options.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string_view>
+
+#ifndef DVSGI_VERSION
+#define DVSGI_VERSION "unknown"
+#endif
+
+namespace dvsgi::app {
+
+namespace {
+
+// Thrown inside the parser only; parseCommandLine turns it into ParseResult::error.
+struct ParseError {
+    std::string message;
+};
+
+[[noreturn]] void reject(std::string message) { throw ParseError{std::move(message)}; }
+
+[[noreturn]] void badValue(std::string_view opt, std::string_view expected, std::string_view got) {
+    reject(std::string(opt) + ": expected " + std::string(expected) + ", got '" +
+           std::string(got) + "'");
+}
+
+// Digits only: from_chars alone would accept a leading '-' for signed types
+// and we want "+5", " 5", "5x", "0x10" all rejected.
+uint64_t parseUnsigned(std::string_view opt, std::string_view text, uint64_t lo, uint64_t hi,
+                       std::string_view expected) {
+    const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return c >= '0' && c <= '9';
+    });
+    uint64_t v = 0;
+    if (!digits) badValue(opt, expected, text);
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (ec != std::errc() || end != text.data() + text.size() || v < lo || v > hi)
+        badValue(opt, expected, text);
+    return v;
+}
+
+float parseFloat(std::string_view opt, std::string_view text, float lo, float hi,
+                 std::string_view expected) {
+    std::string_view t = text;
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);  // "+1" EV reads naturally
+    // from_chars would take "inf"/"nan"; the range test below rejects them, but
+    // demand a digit so words like "infinity" fail for the obvious reason.
+    const bool hasDigit = std::any_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+    float v = 0.0f;
+    if (t.empty() || !hasDigit || t.front() == '+') badValue(opt, expected, text);
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size() || !std::isfinite(v) || v < lo || v > hi)
+        badValue(opt, expected, text);
+    return v;
+}
+
+bool endsWithNoCase(std::string_view s, std::string_view suffix) {
+    if (s.size() < suffix.size()) return false;
+    return std::equal(suffix.begin(), suffix.end(), s.end() - suffix.size(), [](char a, char b) {
+        return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+    });
+}
+
+// A file name with the given extension and a non-empty stem.
+void requireExtension(std::string_view opt, std::string_view text, std::string_view ext,
+                      std::string_view expected) {
+    const size_t slash = text.find_last_of('/');
+    const std::string_view base = slash == std::string_view::npos ? text : text.substr(slash + 1);
+    if (!endsWithNoCase(base, ext) || base.size() == ext.size()) badValue(opt, expected, text);
+}
+
+struct OptionSpec {
+    std::string_view name;
+    bool takesValue;
+    std::function<void(RenderOptions&, std::string_view opt, std::string_view value)> apply;
+};
+
+const std::vector<OptionSpec>& optionSpecs() {
+    static const std::vector<OptionSpec> specs = {
+        {"--out", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             requireExtension(opt, v, ".exr", "a .exr file name");
+             o.outExr = v;
+         }},
+        {"--png", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "none") requireExtension(opt, v, ".png", "a .png file name or 'none'");
+             o.outPng = v;
+         }},
+        {"--width", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.width = uint32_t(parseUnsigned(opt, v, 1, 16384, "an integer in 1..16384"));
+         }},
+        {"--height", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.height = uint32_t(parseUnsigned(opt, v, 1, 16384, "an integer in 1..16384"));
+         }},
+        {"--camera", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.camera = int(parseUnsigned(opt, v, 0, uint64_t(std::numeric_limits<int>::max()),
+                                          "an integer >= 0"));
+         }},
+        {"--exposure", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.exposure = parseFloat(opt, v, -20.0f, 20.0f, "a number in -20..20 (EV)");
+         }},
+        {"--metrics", true,
+         [](RenderOptions& o, std::string_view, std::string_view v) { o.metricsPath = v; }},
+        {"--device", true,
+         [](RenderOptions& o, std::string_view, std::string_view v) { o.device = v; }},
+        {"--validate", false,
+         [](RenderOptions& o, std::string_view, std::string_view) { o.validate = true; }},
+        {"--shadow-map", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             const char* expected = "a power of two in 256..8192";
+             const uint64_t n = parseUnsigned(opt, v, 256, 8192, expected);
+             if ((n & (n - 1)) != 0) badValue(opt, expected, v);
+             o.shadowMapSize = uint32_t(n);
+         }},
+        {"--supersample", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.supersample = uint32_t(parseUnsigned(opt, v, 1, 8, "an integer in 1..8"));
+         }},
+        {"--quiet", false,
+         [](RenderOptions& o, std::string_view, std::string_view) { o.quiet = true; }},
+    };
+    return specs;
+}
+
+bool isHelp(std::string_view a) { return a == "--help" || a == "-h"; }
+
+void parseRenderArgs(const std::vector<std::string_view>& args, RenderOptions& o) {
+    bool haveScene = false;
+    bool optionsEnded = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        if (optionsEnded || arg.empty() || arg[0] != '-' || arg == "-") {
+            if (haveScene)
+                reject("unexpected argument '" + std::string(arg) + "' (scene already given as '" +
+                       o.scene + "')");
+            o.scene = arg;
+            haveScene = true;
+            continue;
+        }
+        if (arg == "--") {
+            optionsEnded = true;
+            continue;
+        }
+        const size_t eq = arg.find('=');
+        const std::string_view name = arg.substr(0, eq);
+        const auto& specs = optionSpecs();
+        const auto spec = std::find_if(specs.begin(), specs.end(),
+                                       [&](const OptionSpec& s) { return s.name == name; });
+        if (spec == specs.end())
+            reject("unknown option '" + std::string(name) + "' (see dvsgi --help)");
+
+        std::string_view value;
+        if (!spec->takesValue) {
+            if (eq != std::string_view::npos)
+                reject(std::string(name) + ": takes no value, got '" + std::string(arg.substr(eq + 1)) + "'");
+        } else if (eq != std::string_view::npos) {
+            value = arg.substr(eq + 1);
+            if (value.empty()) reject(std::string(name) + ": missing value");
+        } else {
+            // A following long option means the value was forgotten; single-dash
+            // words are allowed through so "--exposure -2" works.
+            if (i + 1 >= args.size() || args[i + 1].empty() || args[i + 1].starts_with("--"))
+                reject(std::string(name) + ": missing value");
+            value = args[++i];
+        }
+        spec->apply(o, name, value);
+    }
+}
+
+}  // namespace
+
+ParseResult parseCommandLine(int argc, const char* const* argv) {
+    ParseResult result;
+    std::vector<std::string_view> args;
+    for (int i = 1; i < argc; ++i) args.emplace_back(argv[i] ? argv[i] : "");
+
+    if (args.empty()) {
+        result.command = Command::Help;
+        return result;
+    }
+    // Asking for help wins over any other problem on the line.
+    const auto helpEnd = std::find(args.begin(), args.end(), std::string_view("--"));
+    if (std::any_of(args.begin(), helpEnd, isHelp) || args[0] == "help") {
+        result.command = Command::Help;
+        return result;
+    }
+    if (args[0] == "--version") {
+        result.command = Command::Version;
+        return result;
+    }
+
+    const std::string_view cmd = args[0];
+    if (cmd == "render") result.command = Command::Render;
+    else if (cmd == "view") result.command = Command::View;
+    else if (cmd == "bench") result.command = Command::Bench;
+    else {
+        result.command = Command::Help;
+        if (cmd.starts_with("-"))
+            result.error = "expected a command before '" + std::string(cmd) +
+                           "': render, view, bench, help or --version (see dvsgi --help)";
+        else
+            result.error = "unknown command '" + std::string(cmd) +
+                           "' (expected render, view, bench, help or --version)";
+        return result;
+    }
+
+    try {
+        parseRenderArgs({args.begin() + 1, args.end()}, result.render);
+    } catch (const ParseError& e) {
+        result.error = e.message;
+        result.render = RenderOptions{};
+    }
+    return result;
+}
+
+std::string usageText() {
+    return "dvsgi " DVSGI_VERSION
+           " - voxel global illumination renderer (Vulkan)\n"
+           "\n"
+           "Usage:\n"
+           "  dvsgi render [SCENE] [options]   render one frame to an EXR (and a PNG preview)\n"
+           "  dvsgi view   [SCENE] [options]   interactive window (same options)\n"
+           "  dvsgi bench  [SCENE] [options]   time the frame passes (same options)\n"
+           "  dvsgi help | --help | -h         this text\n"
+           "  dvsgi --version                  print the version\n"
+           "\n"
+           "SCENE is a glTF 2.0 file (.gltf/.glb); without one the built-in Cornell box is used.\n"
+           "Options take their value as '--opt VALUE' or '--opt=VALUE'; '--' ends the options.\n"
+           "\n"
+           "Options:\n"
+           "  --out FILE.exr       output frame (default out/render.exr). OpenEXR, float32 R,G,B:\n"
+           "                       linear radiance in W.m^-2.sr^-1 averaged over each pixel's area;\n"
+           "                       no exposure, tone mapping or gamma. Missing directories are created.\n"
+           "  --png FILE.png|none  8-bit sRGB preview (default: the --out name with .png);\n"
+           "                       'none' writes no preview\n"
+           "  --width N            image width in pixels, 1..16384 (default 512)\n"
+           "  --height N           image height in pixels, 1..16384 (default 512)\n"
+           "  --camera N           index among the scene's camera nodes, >= 0 (default 0 = first)\n"
+           "  --exposure EV        exposure in stops applied to the PNG preview only:\n"
+           "                       preview = sRGB(clamp(radiance * 2^EV, 0, 1)); -20..20 (default 0).\n"
+           "                       The EXR is never scaled.\n"
+           "  --metrics FILE.json  write timings and frame statistics as JSON (default: none)\n"
+           "  --device NAME        use the first Vulkan device whose name contains NAME\n"
+           "                       (default: the best available device)\n"
+           "  --validate           enable the Khronos validation layer (default off)\n"
+           "  --shadow-map N       shadow map resolution in texels per side, a power of two\n"
+           "                       in 256..8192 (default 2048)\n"
+           "  --supersample K      render at K*width x K*height and box-average each KxK block,\n"
+           "                       giving pixel-area averages; 1..8 (default 1 = no supersampling)\n"
+           "  --quiet              do not print the timing table on stdout (default: print it)\n"
+           "  --help, -h           this text\n"
+           "\n"
+           "Exit status: 0 on success, 2 for a bad command line, another non-zero value\n"
+           "for any other failure.\n";
+}
+
+}  // namespace dvsgi::app
