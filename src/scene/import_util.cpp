@@ -1,0 +1,81 @@
+#include "scene/import_util.h"
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cstring>
+#include <fstream>
+
+#include <stb/stb_image.h>
+
+namespace dvsgi::scene::detail {
+
+std::optional<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& file) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) return std::nullopt;
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return std::nullopt;
+    in.seekg(0, std::ios::end);
+    std::streamoff size = in.tellg();
+    if (size < 0) return std::nullopt;
+    in.seekg(0, std::ios::beg);
+    std::vector<uint8_t> bytes(static_cast<size_t>(size));
+    if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size)) return std::nullopt;
+    return bytes;
+}
+
+bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& error) {
+    // stb takes an int length; larger inputs cannot be valid images for it.
+    if (size == 0 || size > static_cast<size_t>(INT_MAX)) {
+        error = size == 0 ? "empty image data" : "image data too large";
+        return false;
+    }
+    // stb keeps its flip flag in a global; make sure another user of the
+    // library cannot leave it set and turn our images upside down.
+    stbi_set_flip_vertically_on_load(0);
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(size), &w, &h, &channels, 4);
+    if (!pixels) {
+        const char* reason = stbi_failure_reason();
+        error = reason ? reason : "unknown decoder error";
+        return false;
+    }
+    out.width = static_cast<uint32_t>(w);
+    out.height = static_cast<uint32_t>(h);
+    size_t bytes = static_cast<size_t>(w) * static_cast<size_t>(h) * 4;
+    out.rgba8.assign(pixels, pixels + bytes);
+    stbi_image_free(pixels);
+    return true;
+}
+
+bool decodeImageFile(const std::filesystem::path& file, Texture& out, std::string& error) {
+    auto bytes = readFileBytes(file);
+    if (!bytes) {
+        error = "cannot read file";
+        return false;
+    }
+    return decodeImage(bytes->data(), bytes->size(), out, error);
+}
+
+std::string lowercase(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+void decomposeMatrix(const glm::mat4& m, Node& n) {
+    n.translation = glm::vec3(m[3]);
+    glm::vec3 cols[3] = {glm::vec3(m[0]), glm::vec3(m[1]), glm::vec3(m[2])};
+    glm::vec3 s(glm::length(cols[0]), glm::length(cols[1]), glm::length(cols[2]));
+    // A mirroring matrix has a negative determinant; put the flip into scale
+    // so the remaining rotation is proper.
+    if (glm::dot(glm::cross(cols[0], cols[1]), cols[2]) < 0.0f) s.x = -s.x;
+    n.scale = s;
+    if (s.x == 0.0f || s.y == 0.0f || s.z == 0.0f) {
+        n.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+        return;
+    }
+    glm::mat3 r(cols[0] / s.x, cols[1] / s.y, cols[2] / s.z);
+    n.rotation = glm::normalize(glm::quat_cast(r));
+}
+
+}  // namespace dvsgi::scene::detail

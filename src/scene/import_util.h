@@ -1,0 +1,28 @@
+// Internal helpers shared by the importers: whole-file reads and stb_image
+// decoding into a Texture. Not part of the public scene API.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace dvsgi::scene::detail {
+
+std::optional<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& file);
+
+// Decodes any format stb_image knows into RGBA8 (row 0 = top). On failure
+// returns false and sets `error` to stb's reason; `out` is then unspecified.
+bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& error);
+bool decodeImageFile(const std::filesystem::path& file, Texture& out, std::string& error);
+
+std::string lowercase(std::string s);
+
+// Splits an affine matrix into the node's T * R * S. Shear cannot be
+// represented and is lost (glTF requires decomposable node matrices).
+void decomposeMatrix(const glm::mat4& m, Node& n);
+
+}  // namespace dvsgi::scene::detail
