@@ -127,6 +127,78 @@ const std::vector<OptionSpec>& optionSpecs() {
          }},
         {"--quiet", false,
          [](RenderOptions& o, std::string_view, std::string_view) { o.quiet = true; }},
+        {"--voxels", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             const char* expected = "0 or a power of two in 32..512";
+             const uint64_t n = parseUnsigned(opt, v, 0, 512, expected);
+             if (n != 0 && (n < 32 || (n & (n - 1)) != 0)) badValue(opt, expected, v);
+             o.voxels = uint32_t(n);
+         }},
+        {"--voxel-box", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             const char* expected = "six numbers minx,miny,minz,maxx,maxy,maxz with min < max";
+             std::string_view rest = v;
+             for (int i = 0; i < 6; ++i) {
+                 const size_t comma = rest.find(',');
+                 if ((comma == std::string_view::npos) != (i == 5)) badValue(opt, expected, v);
+                 o.voxelBox[i] = parseFloat(opt, rest.substr(0, comma), -1e6f, 1e6f, expected);
+                 rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
+             }
+             for (int i = 0; i < 3; ++i)
+                 if (!(o.voxelBox[i] < o.voxelBox[i + 3])) badValue(opt, expected, v);
+             o.hasVoxelBox = true;
+         }},
+        {"--conservative", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "auto" && v != "gs") badValue(opt, "'auto' (hardware when available) or 'gs'", v);
+             o.hardwareConservative = v == "auto";
+         }},
+        {"--view", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             static const std::pair<std::string_view, ViewKind> kinds[] = {
+                 {"final", ViewKind::Final},
+                 {"voxels:albedo", ViewKind::VoxelAlbedo},
+                 {"voxels:normal", ViewKind::VoxelNormal},
+                 {"voxels:emission", ViewKind::VoxelEmission},
+                 {"voxels:radiance", ViewKind::VoxelRadiance},
+                 {"voxels:directional", ViewKind::VoxelDirectional}};
+             for (const auto& [name, kind] : kinds)
+                 if (v == name) {
+                     o.view = kind;
+                     return;
+                 }
+             badValue(opt, "final or voxels:albedo|normal|emission|radiance|directional", v);
+         }},
+        {"--view-mip", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.viewMip = uint32_t(parseUnsigned(opt, v, 0, 16, "an integer in 0..16"));
+         }},
+        {"--view-direction", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             static const std::string_view names[] = {"-x", "+x", "-y", "+y", "-z", "+z"};
+             for (uint32_t i = 0; i < 6; ++i)
+                 if (v == names[i]) {
+                     o.viewDirection = i;
+                     return;
+                 }
+             badValue(opt, "one of -x +x -y +y -z +z", v);
+         }},
+        {"--frames", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.frames = uint32_t(parseUnsigned(opt, v, 1, 100000, "an integer in 1..100000"));
+         }},
+        {"--time-step", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.timeStep = parseFloat(opt, v, 0.0f, 3600.0f, "seconds in 0..3600");
+         }},
+        {"--dynamic", true,
+         [](RenderOptions& o, std::string_view, std::string_view v) { o.dynamicNodes.emplace_back(v); }},
+        {"--add-model", true,
+         [](RenderOptions& o, std::string_view, std::string_view v) { o.addModel = v; }},
+        {"--add-model-size", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.addModelSize = parseFloat(opt, v, 1e-4f, 1e4f, "a size in metres in 0.0001..10000");
+         }},
     };
     return specs;
 }
@@ -257,6 +329,29 @@ std::string usageText() {
            "  --supersample K      render at K*width x K*height and box-average each KxK block,\n"
            "                       giving pixel-area averages; 1..8 (default 1 = no supersampling)\n"
            "  --quiet              do not print the timing table on stdout (default: print it)\n"
+           "\n"
+           "Voxels:\n"
+           "  --voxels N           voxel grid of N^3, N a power of two in 32..512 (default 128);\n"
+           "                       0 = no voxel passes. The grid is a cube on the scene's bounds\n"
+           "  --voxel-box X0,Y0,Z0,X1,Y1,Z1  put the grid on this box (metres) instead\n"
+           "  --conservative auto|gs  conservative rasterization for voxelization: hardware\n"
+           "                       (VK_EXT_conservative_rasterization) when the device has it,\n"
+           "                       else geometry-shader dilation (default auto); gs = always dilate\n"
+           "  --view MODE          final (default) or voxels:albedo|normal|emission|radiance|directional:\n"
+           "                       draw that voxel volume as cubes from the camera instead\n"
+           "  --view-mip M         mip level for voxels:directional (default 0)\n"
+           "  --view-direction D   -x +x -y +y -z +z: which directional volume (default -x)\n"
+           "\n"
+           "Animation and dynamic objects:\n"
+           "  --frames K           render K frames of the glTF animations, K*time-step seconds,\n"
+           "                       and write the last; a '#' run in --out (e.g. f_###.exr)\n"
+           "                       writes every frame with its number (default 1)\n"
+           "  --time-step S        seconds between frames (default 1/30)\n"
+           "  --dynamic NAME       mark the node NAME dynamic (repeatable); animated nodes are\n"
+           "                       dynamic already. Dynamic geometry is re-voxelized every frame\n"
+           "  --add-model FILE     add FILE (any supported format) as a dynamic object moving on\n"
+           "                       a circle through the scene, one turn per 120 frames\n"
+           "  --add-model-size M   its largest extent in metres (default: 1/5 of the scene)\n"
            "  --help, -h           this text\n"
            "\n"
            "Exit status: 0 on success, 2 for a bad command line, another non-zero value\n"

@@ -11,6 +11,8 @@ namespace dvsgi::app {
 
 enum class Command { Render, View, Bench, Help, Version };
 
+enum class ViewKind { Final, VoxelAlbedo, VoxelNormal, VoxelEmission, VoxelRadiance, VoxelDirectional };
+
 // Everything `dvsgi render` accepts. Defaults are the documented ones in --help.
 struct RenderOptions {
     std::string scene;            // empty = built-in Cornell box
@@ -26,6 +28,22 @@ struct RenderOptions {
     uint32_t shadowMapSize = 2048;
     uint32_t supersample = 1;     // k: render k*W x k*H and box-filter to W x H
     bool quiet = false;           // no timing table on stdout
+
+    // Voxels (issue #3).
+    uint32_t voxels = 128;        // N of the N^3 grid, power of two 32..512; 0 = none
+    bool hasVoxelBox = false;     // --voxel-box minx,miny,minz,maxx,maxy,maxz
+    float voxelBox[6] = {0, 0, 0, 0, 0, 0};
+    bool hardwareConservative = true;  // --conservative auto|gs
+    ViewKind view = ViewKind::Final;
+    uint32_t viewMip = 0;
+    uint32_t viewDirection = 0;   // 0..5 = -X +X -Y +Y -Z +Z
+
+    // Animation and dynamic objects.
+    uint32_t frames = 1;          // render frames 0..K-1, write the last (or each: '#' in --out)
+    float timeStep = 1.0f / 30.0f;  // seconds between frames
+    std::vector<std::string> dynamicNodes;  // node names marked dynamic
+    std::string addModel;         // a model that moves on a circle through the scene (dynamic)
+    float addModelSize = 0.0f;    // its largest extent in metres; 0 = 1/5 of the scene
 };
 
 struct ParseResult {

@@ -1,5 +1,6 @@
 #include "render_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,15 +11,76 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/load.h"
+#include "vxgi/volumes.h"
+#include "vxgi/voxelize.h"
 
 namespace dvsgi::app {
 
 namespace {
 
-std::string pngPathFor(const RenderOptions& o) {
+std::string pngPathFor(const std::string& exr, const RenderOptions& o) {
     if (o.outPng == "none") return "";
-    if (!o.outPng.empty()) return o.outPng;
-    return std::filesystem::path(o.outExr).replace_extension(".png").string();
+    if (!o.outPng.empty() && o.frames == 1) return o.outPng;
+    return std::filesystem::path(exr).replace_extension(".png").string();
+}
+
+// "f_###.exr" with frame 7 -> "f_007.exr". No '#': the name itself.
+std::string framePath(const std::string& pattern, uint32_t frame) {
+    const size_t first = pattern.find('#');
+    if (first == std::string::npos) return pattern;
+    size_t last = first;
+    while (last < pattern.size() && pattern[last] == '#') ++last;
+    std::string number = std::to_string(frame);
+    if (number.size() < last - first) number.insert(0, last - first - number.size(), '0');
+    return pattern.substr(0, first) + number + pattern.substr(last);
+}
+
+render::ViewMode toViewMode(ViewKind k) {
+    switch (k) {
+        case ViewKind::VoxelAlbedo: return render::ViewMode::VoxelAlbedo;
+        case ViewKind::VoxelNormal: return render::ViewMode::VoxelNormal;
+        case ViewKind::VoxelEmission: return render::ViewMode::VoxelEmission;
+        case ViewKind::VoxelRadiance: return render::ViewMode::VoxelRadiance;
+        case ViewKind::VoxelDirectional: return render::ViewMode::VoxelDirectional;
+        default: return render::ViewMode::Final;
+    }
+}
+
+void markDynamic(scene::Scene& s, const std::vector<std::string>& names) {
+    for (const std::string& name : names) {
+        bool found = false;
+        for (scene::Node& n : s.nodes)
+            if (n.name == name) n.dynamic = found = true;
+        if (!found) throw std::runtime_error("--dynamic: the scene has no node named '" + name + "'");
+    }
+}
+
+// Loads `path`, scales it to `size` metres and sends it round a circle on the
+// floor of the scene's bounds as a dynamic object.
+void addMovingModel(scene::Scene& s, const std::string& path, float size) {
+    const scene::Scene model = scene::loadScene(path);
+    const scene::Bounds sb = scene::worldBounds(s, scene::drawItems(s, scene::worldMatrices(s)));
+    const scene::Bounds mb = scene::worldBounds(model, scene::drawItems(model, scene::worldMatrices(model)));
+    if (!sb.valid() || !mb.valid()) throw std::runtime_error("--add-model: " + path + " or the scene has no geometry");
+    const glm::vec3 se = sb.max - sb.min, me = mb.max - mb.min;
+    const float target = size > 0.0f ? size : 0.2f * std::max({se.x, se.y, se.z});
+    const float scale = target / std::max({me.x, me.y, me.z, 1e-9f});
+    const int fit = scene::appendScene(s, model, "added model");
+    // Bottom centre of the model at the mover's origin.
+    s.nodes[size_t(fit)].scale = glm::vec3(scale);
+    s.nodes[size_t(fit)].translation = -scale * glm::vec3((mb.min.x + mb.max.x) * 0.5f, mb.min.y,
+                                                          (mb.min.z + mb.max.z) * 0.5f);
+    scene::Node mover;
+    mover.name = "added model path";
+    mover.children = {fit};
+    s.nodes.push_back(mover);
+    const int moverIndex = int(s.nodes.size() - 1);
+    s.nodes[size_t(fit)].parent = moverIndex;
+    s.roots.erase(std::remove(s.roots.begin(), s.roots.end(), fit), s.roots.end());
+    s.roots.push_back(moverIndex);
+    const glm::vec3 centre((sb.min.x + sb.max.x) * 0.5f, sb.min.y, (sb.min.z + sb.max.z) * 0.5f);
+    const float radius = 0.25f * std::min(se.x, se.z);
+    scene::addCircularPath(s, moverIndex, centre, radius, 4.0f);
 }
 
 void printTable(const render::FrameStats& stats, const std::vector<render::MemoryItem>& memory) {
@@ -30,8 +92,16 @@ void printTable(const render::FrameStats& stats, const std::vector<render::Memor
     std::printf("GPU memory: %.1f MiB\n", double(total) / (1024.0 * 1024.0));
 }
 
-void writeMetrics(const std::string& path, const RenderOptions& o, const gpu::Context& ctx,
-                  const render::Renderer& renderer, const render::FrameStats& stats, const scene::Scene& scene) {
+void printVoxelGrid(const vxgi::VoxelVolumes& v, bool hardware) {
+    const vxgi::GridSpec& g = v.grid;
+    std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s conservative rasterization\n", g.n,
+                g.origin.x, g.origin.y, g.origin.z, g.voxelSize, hardware ? "hardware" : "geometry-shader");
+    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n))
+        std::printf("  %-36s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
+}
+
+nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, const render::Renderer& renderer,
+                           const render::FrameStats& stats, const scene::Scene& scene) {
     nlohmann::json j;
     j["scene"] = scene.source;
     j["device"] = ctx.deviceName;
@@ -40,12 +110,22 @@ void writeMetrics(const std::string& path, const RenderOptions& o, const gpu::Co
     j["supersample"] = o.supersample;
     j["shadow_map_size"] = o.shadowMapSize;
     j["camera"] = o.camera;
+    j["frames"] = o.frames;
     j["triangles"] = renderer.triangleCount();
     j["lights"] = scene.lights.size();
     j["gpu_ms"] = stats.gpuMs;
     for (const gpu::TimerResult& r : stats.passes) j["passes"].push_back({{"name", r.name}, {"ms", r.ms}});
     for (const render::MemoryItem& m : renderer.memory()) j["memory_bytes"][m.name] = m.bytes;
+    if (const vxgi::VoxelVolumes* v = renderer.volumes()) {
+        j["voxels"] = {{"n", v->grid.n},
+                       {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
+                       {"voxel_size", v->grid.voxelSize}};
+    }
     j["validation_errors"] = ctx.validationErrors();
+    return j;
+}
+
+void writeJson(const std::string& path, const nlohmann::json& j) {
     std::filesystem::path p(path);
     if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
     std::ofstream f(path);
@@ -56,8 +136,33 @@ void writeMetrics(const std::string& path, const RenderOptions& o, const gpu::Co
 
 }  // namespace
 
-int runRender(const RenderOptions& o) {
+scene::Scene loadForOptions(const RenderOptions& o) {
     scene::Scene scene = o.scene.empty() ? scene::builtinCornellBox() : scene::loadScene(o.scene);
+    markDynamic(scene, o.dynamicNodes);
+    if (!o.addModel.empty()) addMovingModel(scene, o.addModel, o.addModelSize);
+    return scene;
+}
+
+render::RenderSettings settingsForOptions(const RenderOptions& o) {
+    render::RenderSettings rs;
+    rs.width = o.width;
+    rs.height = o.height;
+    rs.supersample = o.supersample;
+    rs.shadowMapSize = o.shadowMapSize;
+    rs.camera = o.camera;
+    rs.voxels = o.voxels;
+    rs.hasVoxelBox = o.hasVoxelBox;
+    rs.voxelBoxMin = glm::vec3(o.voxelBox[0], o.voxelBox[1], o.voxelBox[2]);
+    rs.voxelBoxMax = glm::vec3(o.voxelBox[3], o.voxelBox[4], o.voxelBox[5]);
+    rs.hardwareConservative = o.hardwareConservative;
+    rs.view.mode = toViewMode(o.view);
+    rs.view.mip = o.viewMip;
+    rs.view.direction = o.viewDirection;
+    return rs;
+}
+
+int runRender(const RenderOptions& o) {
+    const scene::Scene scene = loadForOptions(o);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
     gpu::ContextOptions co;
@@ -66,24 +171,27 @@ int runRender(const RenderOptions& o) {
     co.printDevice = !o.quiet;
     gpu::Context ctx(co);
 
-    render::RenderSettings rs;
-    rs.width = o.width;
-    rs.height = o.height;
-    rs.supersample = o.supersample;
-    rs.shadowMapSize = o.shadowMapSize;
-    rs.camera = o.camera;
-    render::Renderer renderer(ctx, scene, rs);
+    render::Renderer renderer(ctx, scene, settingsForOptions(o));
     for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), renderer.voxelizer()->hardwareConservative());
 
-    const render::FrameStats stats = renderer.renderFrame();
-    const image::ImageRGBA32F img = renderer.readOutput();
-    image::writeExr(o.outExr, img);
-    const std::string png = pngPathFor(o);
-    if (!png.empty()) image::writePng(png, img, o.exposure);
-    if (!o.metricsPath.empty()) writeMetrics(o.metricsPath, o, ctx, renderer, stats, scene);
+    const bool eachFrame = o.outExr.find('#') != std::string::npos;
+    render::FrameStats stats;
+    std::string lastExr, lastPng;
+    for (uint32_t frame = 0; frame < o.frames; ++frame) {
+        if (o.frames > 1 || !scene.animations.empty()) renderer.setTime(float(frame) * o.timeStep);
+        stats = renderer.renderFrame();
+        if (!eachFrame && frame + 1 < o.frames) continue;
+        const image::ImageRGBA32F img = renderer.readOutput();
+        lastExr = framePath(o.outExr, frame);
+        image::writeExr(lastExr, img);
+        lastPng = pngPathFor(lastExr, o);
+        if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
+    }
+    if (!o.metricsPath.empty()) writeJson(o.metricsPath, metricsJson(o, ctx, renderer, stats, scene));
     if (!o.quiet) {
         printTable(stats, renderer.memory());
-        std::printf("wrote %s%s%s\n", o.outExr.c_str(), png.empty() ? "" : " and ", png.c_str());
+        std::printf("wrote %s%s%s\n", lastExr.c_str(), lastPng.empty() ? "" : " and ", lastPng.c_str());
     }
     if (ctx.validationErrors() > 0) {
         std::fprintf(stderr, "dvsgi: %u Vulkan validation error(s)\n", ctx.validationErrors());

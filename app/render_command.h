@@ -2,8 +2,14 @@
 #pragma once
 
 #include "options.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
 
 namespace dvsgi::app {
+
+// The scene with --dynamic and --add-model applied.
+scene::Scene loadForOptions(const RenderOptions& options);
+render::RenderSettings settingsForOptions(const RenderOptions& options);
 
 // Returns the process exit code. Errors are printed as one line on stderr.
 int runRender(const RenderOptions& options);

@@ -50,6 +50,21 @@ void computeWritesVisibleTo(VkCommandBuffer cmd, VkPipelineStageFlags2 stages, V
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, stages, access);
 }
 
+void storageWritesVisible(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkPipelineStageFlags2 dstStages) {
+    // Each access bit is only legal with stages that can perform it.
+    const VkPipelineStageFlags2 transfer = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
+    const bool srcShader = (srcStages & ~transfer) != 0, srcTransfer = (srcStages & transfer) != 0;
+    const bool dstShader = (dstStages & ~transfer) != 0, dstTransfer = (dstStages & transfer) != 0;
+    VkAccessFlags2 srcAccess = 0, dstAccess = 0;
+    if (srcShader) srcAccess |= VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    if (srcTransfer) srcAccess |= VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    if (dstShader)
+        dstAccess |= VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
+    if (dstTransfer) dstAccess |= VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    memoryBarrier(cmd, srcStages, srcAccess, dstStages, dstAccess);
+}
+
 void transferWritesVisibleToShaders(VkCommandBuffer cmd) {
     memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_UNIFORM_READ_BIT);

@@ -50,6 +50,9 @@ void transitionMip(VkCommandBuffer cmd, const Image& image, uint32_t mip, ImageU
 
 // Makes compute-shader writes to buffers/images visible to the stages given.
 void computeWritesVisibleTo(VkCommandBuffer cmd, VkPipelineStageFlags2 stages, VkAccessFlags2 access);
+// Makes storage writes of `srcStages` (images kept in GENERAL layout, such as
+// the voxel volumes) visible to storage reads and writes of `dstStages`.
+void storageWritesVisible(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkPipelineStageFlags2 dstStages);
 // Makes transfer writes (uploads, clears) visible to every shader stage.
 void transferWritesVisibleToShaders(VkCommandBuffer cmd);
 

@@ -15,6 +15,7 @@
 #include "render/scene_gpu.h"
 #include "render/shadows.h"
 #include "shared/scene_data.h"
+#include "vxgi/voxelize.h"
 
 namespace dvsgi::render {
 
@@ -29,9 +30,11 @@ glm::mat4 projectionMatrix(const scene::PlacedCamera& camera, uint32_t width, ui
     return p;
 }
 
-Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, const RenderSettings& settings)
-    : ctx_(ctx), scene_(scene), settings_(settings) {
+Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const RenderSettings& settings)
+    : ctx_(ctx), scene_(sceneIn), settings_(settings) {
+    const scene::Scene& scene = scene_;
     const std::vector<glm::mat4> world = scene::worldMatrices(scene);
+    for (const scene::DrawItem& it : scene::drawItems(scene, world)) drawWorld_.push_back(it.world);
     const std::vector<scene::PlacedCamera> cameras = scene::placedCameras(scene, world);
     if (cameras.empty()) throw std::runtime_error(scene.source + ": the scene has no camera");
     if (settings.camera < 0 || size_t(settings.camera) >= cameras.size())
@@ -47,16 +50,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, const Ren
 
     const uint32_t iw = settings.width * settings.supersample, ih = settings.height * settings.supersample;
     sceneGpu_ = std::make_unique<SceneGpu>(ctx, scene);
-    const LightSetup setup = setupLights(scene::placedLights(scene, world), sceneGpu_->bounds, settings.shadowMapSize,
-                                         settings.shadows);
-    lightCount_ = uint32_t(setup.lights.size());
-    viewCount_ = uint32_t(setup.views.size());
-    lights_ = std::make_unique<gpu::Buffer>(gpu::createBuffer(ctx, setup.lights.data(),
-                                                              setup.lights.size() * sizeof(sh::GpuLight),
-                                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights"));
-    views_ = std::make_unique<gpu::Buffer>(gpu::createBuffer(ctx, setup.views.data(),
-                                                             setup.views.size() * sizeof(sh::GpuShadowView),
-                                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "shadow views"));
+    uploadLights();
     frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),
                                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            gpu::MemoryUse::Device, "frame constants");
@@ -65,7 +59,55 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& scene, const Ren
     lighting_ = std::make_unique<LightingPass>(ctx, iw, ih);
     composite_ = std::make_unique<CompositePass>(ctx, settings.width, settings.height, settings.supersample);
     timers_ = std::make_unique<gpu::GpuTimers>(ctx);
+    if (settings.voxels > 0) {
+        const vxgi::GridSpec grid =
+            settings.hasVoxelBox ? vxgi::gridForBox(settings.voxelBoxMin, settings.voxelBoxMax, settings.voxels)
+                                 : vxgi::fitGrid(sceneGpu_->bounds, settings.voxels);
+        volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid);
+        voxelizer_ = std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative);
+        voxelView_ = std::make_unique<VoxelViewPass>(ctx);
+    } else if (settings.view.mode != ViewMode::Final) {
+        throw std::runtime_error("--view: the voxel views need voxels (--voxels 0 turns them off)");
+    }
     updateFrameConstants();
+}
+
+void Renderer::uploadLights() {
+    const std::vector<glm::mat4> world = scene::worldMatrices(scene_);
+    const LightSetup setup = setupLights(scene::placedLights(scene_, world), sceneGpu_->bounds,
+                                         settings_.shadowMapSize, settings_.shadows);
+    const VkDeviceSize lightBytes = setup.lights.size() * sizeof(sh::GpuLight);
+    const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
+    if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {
+        if (lightBytes) gpu::uploadBuffer(ctx_, *lights_, setup.lights.data(), lightBytes);
+        if (viewBytes) gpu::uploadBuffer(ctx_, *views_, setup.views.data(), viewBytes);
+        return;
+    }
+    lightCount_ = uint32_t(setup.lights.size());
+    viewCount_ = uint32_t(setup.views.size());
+    lights_ = std::make_unique<gpu::Buffer>(
+        gpu::createBuffer(ctx_, setup.lights.data(), lightBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights"));
+    views_ = std::make_unique<gpu::Buffer>(
+        gpu::createBuffer(ctx_, setup.views.data(), viewBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "shadow views"));
+}
+
+void Renderer::sceneChanged() {
+    const std::vector<glm::mat4> world = scene::worldMatrices(scene_);
+    const std::vector<scene::DrawItem> items = scene::drawItems(scene_, world);
+    for (size_t i = 0; i < items.size() && i < drawWorld_.size(); ++i)
+        if (!sceneGpu_->ranges[i].dynamic && items[i].world != drawWorld_[i]) staticDirty_ = true;
+    drawWorld_.clear();
+    for (const scene::DrawItem& it : items) drawWorld_.push_back(it.world);
+    sceneGpu_->updateDraws(ctx_, scene_, items);
+    const std::vector<scene::PlacedCamera> cameras = scene::placedCameras(scene_, world);
+    camera_ = cameras.at(size_t(settings_.camera));
+    uploadLights();  // shadow views follow the lights and the scene bounds
+    updateFrameConstants();
+}
+
+void Renderer::setTime(float seconds) {
+    scene::applyAnimations(scene_, seconds);
+    sceneChanged();
 }
 
 Renderer::~Renderer() = default;
@@ -85,13 +127,27 @@ void Renderer::updateFrameConstants() {
 
 FrameStats Renderer::renderFrame() {
     timers_->reset();
+    gpu::GpuTimers* t = timers_.get();
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-        gpu::GpuTimerScope total(timers_.get(), cmd, "frame");
-        shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, timers_.get());
-        gbuffer_->record(cmd, *sceneGpu_, *frame_, timers_.get());
-        lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, timers_.get());
-        composite_->record(cmd, lighting_->direct, timers_.get());
+        gpu::GpuTimerScope total(t, cmd, "frame");
+        if (volumes_) {
+            if (staticDirty_) {
+                voxelizer_->clearAll(cmd, *volumes_, t);
+                voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
+            }
+            voxelizer_->clearDynamic(cmd, *volumes_, t);
+            voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
+        }
+        if (settings_.view.mode != ViewMode::Final) {
+            voxelView_->record(cmd, *volumes_, *frame_, composite_->output, settings_.view, t);
+            return;
+        }
+        shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
+        gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
+        lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, t);
+        composite_->record(cmd, lighting_->direct, t);
     });
+    staticDirty_ = false;
     FrameStats stats;
     for (const gpu::TimerResult& r : timers_->results()) {
         if (r.name == "frame")
@@ -115,7 +171,7 @@ image::ImageRGBA32F Renderer::readOutput() const {
 std::vector<MemoryItem> Renderer::memory() const {
     uint64_t textures = 0;
     for (const gpu::Image& t : sceneGpu_->textures) textures += t.memorySize();
-    return {
+    std::vector<MemoryItem> items = {
         {"geometry buffers", sceneGpu_->vertices.size() + sceneGpu_->indices.size() + sceneGpu_->draws.size()},
         {"textures", textures},
         {"shadow maps", shadows_->memoryBytes()},
@@ -123,6 +179,15 @@ std::vector<MemoryItem> Renderer::memory() const {
         {"direct radiance", lighting_->direct.memorySize()},
         {"output", composite_->output.memorySize()},
     };
+    if (volumes_) {
+        items.push_back({"voxel attributes", volumes_->accum.memorySize()});
+        items.push_back({"voxel static flags", volumes_->flags.memorySize()});
+        items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
+        uint64_t directional = 0;
+        for (const gpu::Image& d : volumes_->directional) directional += d.memorySize();
+        items.push_back({"directional volumes", directional});
+    }
+    return items;
 }
 
 }  // namespace dvsgi::render

@@ -1,5 +1,7 @@
-// One frame of dvsgi, headless: shadow maps -> G-buffer -> direct lighting ->
-// composite. docs/ARCHITECTURE.md lists the passes with what they read and write.
+// One frame of dvsgi, headless: voxelization (static once, dynamic every
+// frame) -> shadow maps -> G-buffer -> direct lighting -> composite, or the
+// voxel debug view. docs/ARCHITECTURE.md lists the passes with what they read
+// and write.
 #pragma once
 
 #include <memory>
@@ -8,7 +10,9 @@
 
 #include "gpu/timers.h"
 #include "image/image_io.h"
+#include "render/voxel_view.h"
 #include "scene/scene.h"
+#include "vxgi/volumes.h"
 
 namespace dvsgi::gpu {
 class Context;
@@ -25,6 +29,11 @@ struct RenderSettings {
     int camera = 0;
     bool shadows = true;
     float normalOffsetTexels = 1.5f;  // shadow lookup offset along the normal
+    uint32_t voxels = 128;            // N of the N^3 grid; 0 = no voxel passes
+    bool hasVoxelBox = false;         // grid on a user box instead of the scene bounds
+    glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
+    bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
+    ViewSettings view;
 };
 
 struct FrameStats {
@@ -42,6 +51,12 @@ class ShadowPass;
 class GBufferPass;
 class LightingPass;
 class CompositePass;
+class VoxelViewPass;
+}  // namespace dvsgi::render
+namespace dvsgi::vxgi {
+class Voxelizer;
+}
+namespace dvsgi::render {
 
 class Renderer {
 public:
@@ -51,6 +66,17 @@ public:
     Renderer& operator=(const Renderer&) = delete;
 
     FrameStats renderFrame();                  // records, submits and waits
+
+    // Scene changes: edit scene() (node transforms, ...) then call sceneChanged(),
+    // or let setTime() apply the glTF animations. A static node that moved
+    // makes the next frame re-run static voxelization.
+    scene::Scene& scene() { return scene_; }
+    void sceneChanged();
+    void setTime(float seconds);
+    void markStaticDirty() { staticDirty_ = true; }  // e.g. to time static voxelization
+
+    const vxgi::VoxelVolumes* volumes() const { return volumes_.get(); }
+    const vxgi::Voxelizer* voxelizer() const { return voxelizer_.get(); }
     image::ImageRGBA32F readOutput() const;    // linear radiance, output size
     std::vector<MemoryItem> memory() const;
     const scene::PlacedCamera& camera() const { return camera_; }
@@ -59,9 +85,10 @@ public:
 
 private:
     void updateFrameConstants();
+    void uploadLights();
 
     const gpu::Context& ctx_;
-    const scene::Scene& scene_;
+    scene::Scene scene_;  // own copy: animation and edits change it
     RenderSettings settings_;
     scene::PlacedCamera camera_;
     std::vector<std::string> warnings_;
@@ -72,6 +99,11 @@ private:
     std::unique_ptr<GBufferPass> gbuffer_;
     std::unique_ptr<LightingPass> lighting_;
     std::unique_ptr<CompositePass> composite_;
+    std::unique_ptr<vxgi::VoxelVolumes> volumes_;
+    std::unique_ptr<vxgi::Voxelizer> voxelizer_;
+    std::unique_ptr<VoxelViewPass> voxelView_;
+    std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
+    bool staticDirty_ = true;
     std::unique_ptr<gpu::GpuTimers> timers_;
 };
 

@@ -38,6 +38,12 @@ std::vector<sh::GpuDraw> toGpu(const scene::Scene& scene, const std::vector<scen
     return out;
 }
 
+bool isDynamicNode(const scene::Scene& scene, int node) {
+    for (int n = node; n >= 0 && size_t(n) < scene.nodes.size(); n = scene.nodes[size_t(n)].parent)
+        if (scene.nodes[size_t(n)].dynamic) return true;
+    return false;
+}
+
 uint32_t mipCount(uint32_t w, uint32_t h) {
     return uint32_t(std::floor(std::log2(double(std::max(w, h))))) + 1;
 }
@@ -48,7 +54,10 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
     std::vector<scene::Vertex> allVertices;
     std::vector<uint32_t> allIndices;
     for (const scene::Primitive& p : scene.primitives) {
-        primitiveRanges_.push_back({uint32_t(allIndices.size()), uint32_t(p.indices.size()), int32_t(allVertices.size())});
+        const bool alphaTested = p.material < scene.materials.size() &&
+                                 scene.materials[p.material].alphaMode != scene::AlphaMode::Opaque;
+        primitiveRanges_.push_back(
+            {uint32_t(allIndices.size()), uint32_t(p.indices.size()), int32_t(allVertices.size()), alphaTested, false});
         allVertices.insert(allVertices.end(), p.vertices.begin(), p.vertices.end());
         allIndices.insert(allIndices.end(), p.indices.begin(), p.indices.end());
     }
@@ -99,7 +108,10 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
     bounds = scene::worldBounds(scene, items);
     for (const scene::DrawItem& it : items) triangleCount += scene.primitives[it.primitive].indices.size() / 3;
     ranges.clear();
-    for (const scene::DrawItem& it : items) ranges.push_back(primitiveRanges_[it.primitive]);
+    for (const scene::DrawItem& it : items) {
+        ranges.push_back(primitiveRanges_[it.primitive]);
+        ranges.back().dynamic = isDynamicNode(scene, it.node);
+    }
     std::vector<sh::GpuDraw> gpuDraws = toGpu(scene, items);
     draws = gpu::createBuffer(ctx, gpuDraws.data(), gpuDraws.size() * sizeof(sh::GpuDraw),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "draws");

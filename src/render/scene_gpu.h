@@ -15,6 +15,8 @@ struct DrawRange {
     uint32_t firstIndex;
     uint32_t indexCount;
     int32_t vertexOffset;
+    bool alphaTested;  // MASK or BLEND material: needs a fragment shader even for depth
+    bool dynamic;      // its node or an ancestor is dynamic: re-voxelized every frame
 };
 
 class SceneGpu {

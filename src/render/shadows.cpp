@@ -97,7 +97,6 @@ ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t 
 
     gpu::GraphicsDesc g;
     g.vertex = kShadowVert;
-    g.fragment = kShadowFrag;
     g.depthFormat = VK_FORMAT_D32_SFLOAT;
     g.depthBias = true;
     gpu::LayoutDesc layout;
@@ -108,21 +107,24 @@ ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t 
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::DrawPush);
     layout.pushConstantStages = vs;
-    pipeline_ = gpu::Pipeline(ctx, g, layout, "shadow");
+    opaque_ = gpu::Pipeline(ctx, g, layout, "shadow opaque");
+    g.fragment = kShadowFrag;
+    alphaTested_ = gpu::Pipeline(ctx, g, layout, "shadow alpha-tested");
 }
 
 void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Buffer& views, uint32_t viewCount,
                         gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
     gpu::transition(cmd, map_, gpu::use::Undefined, gpu::use::DepthAttachment);
-    gpu::bind(cmd, pipeline_);
+    // Both pipelines share one layout, so descriptors pushed once serve both.
+    gpu::bind(cmd, opaque_);
     gpu::Descriptors()
         .storageBuffer(sh::BIND_GEOM_DRAWS, scene.draws.handle())
         .storageBuffer(sh::BIND_GEOM_MATERIALS, scene.materials.handle())
         .storageBuffer(sh::BIND_GEOM_SHADOW_VIEWS, views.handle())
-        .push(ctx_, cmd, pipeline_);
+        .push(ctx_, cmd, opaque_);
     VkDescriptorSet set = scene.textureTable->set();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), sh::SET_TEXTURES, 1, &set, 0,
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque_.layout(), sh::SET_TEXTURES, 1, &set, 0,
                             nullptr);
     VkDeviceSize offset = 0;
     VkBuffer vb = scene.vertices.handle();
@@ -147,11 +149,15 @@ void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::B
         vkCmdBeginRendering(cmd, &ri);
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
-        for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-            const sh::DrawPush push{glm::uvec4(i, v, 0, 0)};
-            gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_VERTEX_BIT, push);
-            const DrawRange& r = scene.ranges[i];
-            vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
+        for (bool alpha : {false, true}) {
+            gpu::bind(cmd, alpha ? alphaTested_ : opaque_);
+            for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
+                const DrawRange& r = scene.ranges[i];
+                if (r.alphaTested != alpha) continue;
+                const sh::DrawPush push{glm::uvec4(i, v, 0, 0)};
+                gpu::pushConstants(cmd, opaque_, VK_SHADER_STAGE_VERTEX_BIT, push);
+                vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
+            }
         }
         vkCmdEndRendering(cmd);
     }

@@ -41,7 +41,8 @@ private:
     const gpu::Context& ctx_;
     gpu::Image map_;
     gpu::Sampler sampler_;
-    gpu::Pipeline pipeline_;
+    gpu::Pipeline opaque_;       // depth only: no fragment shader, so no fragment work
+    gpu::Pipeline alphaTested_;  // discards where MASK/BLEND coverage says there is no surface
     uint32_t size_;
 };
 

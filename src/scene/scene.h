@@ -167,6 +167,14 @@ Bounds worldBounds(const Scene& scene, const std::vector<DrawItem>& items);
 // Apply the animations at time t (seconds) to the nodes' local TRS.
 void applyAnimations(Scene& scene, float t);
 
+// Appends `src`'s geometry, materials and textures under a new root node
+// named `rootName` (cameras and lights of `src` are dropped); returns that node.
+int appendScene(Scene& dst, const Scene& src, const std::string& rootName);
+
+// Animates `node` around a horizontal circle (one turn per `period` seconds,
+// sampled with `keys` linear keys) and marks it dynamic.
+void addCircularPath(Scene& scene, int node, glm::vec3 center, float radius, float period, uint32_t keys = 120);
+
 // Adds the documented defaults when the file has none: a camera looking at the
 // bounds from +Z, and a directional "sun" of irradiance 3 W/m^2 (docs/UNITS.md).
 void addDefaults(Scene& scene);

@@ -1,0 +1,84 @@
+// The voxel grid and its volumes, shared by C++ and GLSL.
+//
+// Voxel attributes are accumulated, not averaged in place: one R32_SFLOAT 3D
+// image holds VOXEL_CHANNELS slabs of N^3 floats stacked along z (slab c spans
+// z in [c*N, (c+1)*N)). Fragments add into them with float atomics, so nothing
+// saturates, nothing is dropped, and HDR emission survives. Readers divide by
+// the fragment count (channel CH_COUNT) to get averages.
+#ifndef DVSGI_SHARED_VOXEL_DATA_H
+#define DVSGI_SHARED_VOXEL_DATA_H
+
+#include "common.h"
+
+DVSGI_BEGIN
+
+DVSGI_CONST(uint, CH_ALBEDO_R, 0);
+DVSGI_CONST(uint, CH_ALBEDO_G, 1);
+DVSGI_CONST(uint, CH_ALBEDO_B, 2);
+DVSGI_CONST(uint, CH_COUNT, 3);       // fragments that landed in the voxel
+DVSGI_CONST(uint, CH_EMISSION_R, 4);  // W m^-2 sr^-1, summed
+DVSGI_CONST(uint, CH_EMISSION_G, 5);
+DVSGI_CONST(uint, CH_EMISSION_B, 6);
+// Normal weights per axis and sign: sum of n_a^2 over fragments whose normal
+// has n_a > 0 (POS) or n_a < 0 (NEG). A voxel holding a thin wall's two
+// opposite faces keeps both orientations instead of averaging them to zero.
+DVSGI_CONST(uint, CH_NORMAL_POS_X, 7);
+DVSGI_CONST(uint, CH_NORMAL_NEG_X, 8);
+DVSGI_CONST(uint, CH_NORMAL_POS_Y, 9);
+DVSGI_CONST(uint, CH_NORMAL_NEG_Y, 10);
+DVSGI_CONST(uint, CH_NORMAL_POS_Z, 11);
+DVSGI_CONST(uint, CH_NORMAL_NEG_Z, 12);
+DVSGI_CONST(uint, VOXEL_CHANNELS, 13);
+
+DVSGI_CONST(uint, VOXEL_FLAG_STATIC, 1);
+
+// Voxelization modes (VoxelizePush.mode.x).
+DVSGI_CONST(uint, VOXELIZE_STATIC, 0);   // writes and flags voxels
+DVSGI_CONST(uint, VOXELIZE_DYNAMIC, 1);  // skips voxels flagged static
+
+struct VoxelGrid {
+    vec4 originSize;  // xyz world position of the grid's minimum corner, w voxel edge (m)
+    uvec4 dims;       // x N (voxels per edge), y channels, z mip count of the directional volumes
+};
+DVSGI_CHECK_SIZE(VoxelGrid, 32);
+
+struct VoxelizePush {
+    uvec4 ids;   // x draw index
+    uvec4 mode;  // x VOXELIZE_STATIC/DYNAMIC, y 1 = dilate in the geometry shader
+};
+DVSGI_CHECK_SIZE(VoxelizePush, 32);
+
+// Voxelization pass bindings (set 1 = texture table, as for other geometry passes).
+DVSGI_CONST(uint, BIND_VOX_GRID, 0);
+DVSGI_CONST(uint, BIND_VOX_DRAWS, 1);
+DVSGI_CONST(uint, BIND_VOX_MATERIALS, 2);
+DVSGI_CONST(uint, BIND_VOX_ACCUM, 3);
+DVSGI_CONST(uint, BIND_VOX_FLAGS, 4);
+
+// Dynamic-voxel clear.
+DVSGI_CONST(uint, BIND_CLEAR_GRID, 0);
+DVSGI_CONST(uint, BIND_CLEAR_ACCUM, 1);
+DVSGI_CONST(uint, BIND_CLEAR_FLAGS, 2);
+
+// Voxel debug view (VoxelViewPush.mode.x).
+DVSGI_CONST(uint, VIEW_ALBEDO, 0);
+DVSGI_CONST(uint, VIEW_NORMAL, 1);
+DVSGI_CONST(uint, VIEW_EMISSION, 2);
+DVSGI_CONST(uint, VIEW_RADIANCE, 3);
+DVSGI_CONST(uint, VIEW_DIRECTIONAL, 4);
+
+struct VoxelViewPush {
+    uvec4 mode;  // x VIEW_*, y mip level (directional), z output width, w output height
+};
+DVSGI_CHECK_SIZE(VoxelViewPush, 16);
+
+DVSGI_CONST(uint, BIND_VIEW_GRID, 0);
+DVSGI_CONST(uint, BIND_VIEW_FRAME, 1);
+DVSGI_CONST(uint, BIND_VIEW_ACCUM, 2);
+DVSGI_CONST(uint, BIND_VIEW_RADIANCE, 3);
+DVSGI_CONST(uint, BIND_VIEW_DIRECTIONAL, 4);  // the chosen direction, the chosen mip
+DVSGI_CONST(uint, BIND_VIEW_OUT, 5);
+
+DVSGI_END
+
+#endif

@@ -1,0 +1,76 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_atomic_float : require
+#include "shared/scene_data.h"
+#include "shared/bindings.h"
+#include "shared/voxel_data.h"
+
+layout(set = 0, binding = BIND_VOX_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_VOX_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = BIND_VOX_ACCUM, r32f) uniform coherent image3D accum;
+layout(set = 0, binding = BIND_VOX_FLAGS, r8ui) uniform coherent uimage3D flags;
+layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
+layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
+layout(push_constant) uniform Push { VoxelizePush pc; };
+
+#include "lib/material.glsl"
+
+layout(location = 0) in vec3 inNormal;
+layout(location = 1) in vec2 inUV;
+layout(location = 2) flat in uint inMaterial;
+layout(location = 3) flat in uint inAxis;
+layout(location = 4) flat in vec4 inAabb;
+layout(location = 5) flat in vec3 inPlane;
+layout(location = 6) flat in vec2 inDepthRange;
+
+ivec3 unswizzle(ivec3 p, uint axis) {
+    return axis == 0u ? p.zxy : (axis == 1u ? p.yzx : p.xyz);
+}
+
+void add(ivec3 voxel, uint channel, float value) {
+    if (value != 0.0) imageAtomicAdd(accum, voxel + ivec3(0, 0, int(channel * grid.dims.x)), value);
+}
+
+void main() {
+    vec2 pc2 = gl_FragCoord.xy;
+    if (any(lessThan(pc2, inAabb.xy)) || any(greaterThan(pc2, inAabb.zw))) discard;
+
+    GpuMaterial m = materials[inMaterial];
+    vec4 base = materialBaseColor(m, inUV);
+    if (!materialCovers(m, base.a, pc2)) discard;
+    vec3 emission = m.emission.rgb;
+    if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, inUV).rgb;
+    vec3 n = normalize(inNormal);
+
+    // Every voxel layer the triangle's plane crosses inside this pixel column,
+    // limited to the triangle's own depth range; closed intervals, so a
+    // triangle lying exactly on a voxel face marks the voxels on both sides.
+    float zc = dot(inPlane.xy, pc2) + inPlane.z;
+    float halfSpan = 0.5 * (abs(inPlane.x) + abs(inPlane.y));
+    float zlo = max(zc - halfSpan, inDepthRange.x), zhi = min(zc + halfSpan, inDepthRange.y);
+    int N = int(grid.dims.x);
+    int first = max(int(floor(zlo - 1e-4)), 0), last = min(int(floor(zhi + 1e-4)), N - 1);
+    ivec2 column = ivec2(pc2);
+    for (int layer = first; layer <= last; ++layer) {
+        ivec3 voxel = unswizzle(ivec3(column, layer), inAxis);
+        if (pc.mode.x == VOXELIZE_DYNAMIC) {
+            if (imageLoad(flags, voxel).r == VOXEL_FLAG_STATIC) continue;
+        } else {
+            imageStore(flags, voxel, uvec4(VOXEL_FLAG_STATIC));
+        }
+        add(voxel, CH_ALBEDO_R, base.r);
+        add(voxel, CH_ALBEDO_G, base.g);
+        add(voxel, CH_ALBEDO_B, base.b);
+        add(voxel, CH_COUNT, 1.0);
+        add(voxel, CH_EMISSION_R, emission.r);
+        add(voxel, CH_EMISSION_G, emission.g);
+        add(voxel, CH_EMISSION_B, emission.b);
+        vec3 n2 = n * n;
+        add(voxel, CH_NORMAL_POS_X, n.x > 0.0 ? n2.x : 0.0);
+        add(voxel, CH_NORMAL_NEG_X, n.x < 0.0 ? n2.x : 0.0);
+        add(voxel, CH_NORMAL_POS_Y, n.y > 0.0 ? n2.y : 0.0);
+        add(voxel, CH_NORMAL_NEG_Y, n.y < 0.0 ? n2.y : 0.0);
+        add(voxel, CH_NORMAL_POS_Z, n.z > 0.0 ? n2.z : 0.0);
+        add(voxel, CH_NORMAL_NEG_Z, n.z < 0.0 ? n2.z : 0.0);
+    }
+}

@@ -1,0 +1,134 @@
+#include "vxgi/voxelize.h"
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/timers.h"
+#include "render/scene_gpu.h"
+#include "shared/bindings.h"
+#include "shared/voxel_data.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::vxgi {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+const uint32_t kVert[] = {
+#include "shaders/voxelize.vert.inc"
+};
+const uint32_t kGeom[] = {
+#include "shaders/voxelize.geom.inc"
+};
+const uint32_t kFrag[] = {
+#include "shaders/voxelize.frag.inc"
+};
+const uint32_t kClear[] = {
+#include "shaders/clear_dynamic.comp.inc"
+};
+
+constexpr VkPipelineStageFlags2 kVoxelStages =
+    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+
+}  // namespace
+
+Voxelizer::Voxelizer(const gpu::Context& ctx, const render::SceneGpu& scene, bool hardwareConservative)
+    : ctx_(ctx), hardware_(hardwareConservative && ctx.features.conservativeRaster) {
+    gpu::GraphicsDesc g;
+    g.vertex = kVert;
+    g.geometry = kGeom;
+    g.fragment = kFrag;
+    g.depthTest = false;
+    g.depthWrite = false;
+    g.conservative = hardware_;
+    const VkShaderStageFlags vgf =
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    gpu::LayoutDesc layout;
+    layout.bindings = {{sh::BIND_VOX_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vgf},
+                       {sh::BIND_VOX_DRAWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
+                       {sh::BIND_VOX_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+                       {sh::BIND_VOX_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
+                       {sh::BIND_VOX_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT}};
+    layout.extraSet = scene.textureTable->layout();
+    layout.pushConstantBytes = sizeof(sh::VoxelizePush);
+    layout.pushConstantStages = vgf;
+    voxelize_ = gpu::Pipeline(ctx, g, layout, "voxelize");
+
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    gpu::LayoutDesc clearLayout;
+    clearLayout.bindings = {{sh::BIND_CLEAR_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                            {sh::BIND_CLEAR_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                            {sh::BIND_CLEAR_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
+}
+
+void Voxelizer::clearAll(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "clear all voxels");
+    gpu::storageWritesVisible(cmd, kVoxelStages | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                              VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
+    const VkClearColorValue zero{};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, v.accum.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+    vkCmdClearColorImage(cmd, v.flags.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kVoxelStages);
+}
+
+void Voxelizer::clearDynamic(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "clear dynamic voxels");
+    gpu::storageWritesVisible(cmd, kVoxelStages, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    gpu::bind(cmd, clear_);
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_CLEAR_GRID, v.gridBuffer.handle())
+        .storageImage(sh::BIND_CLEAR_ACCUM, v.accum.view())
+        .storageImage(sh::BIND_CLEAR_FLAGS, v.flags.view())
+        .push(ctx_, cmd, clear_);
+    const uint32_t groups = gpu::groupCount(v.grid.n, 4);
+    vkCmdDispatch(cmd, groups, groups, groups);
+    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kVoxelStages);
+}
+
+void Voxelizer::voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, const VoxelVolumes& v,
+                         VoxelizeMode mode, gpu::GpuTimers* timers) const {
+    const bool dynamic = mode == VoxelizeMode::Dynamic;
+    gpu::GpuTimerScope timer(timers, cmd, dynamic ? "voxelize dynamic" : "voxelize static");
+    gpu::storageWritesVisible(cmd, kVoxelStages | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kVoxelStages);
+    const uint32_t n = v.grid.n;
+    const VkRect2D area{{0, 0}, {n, n}};
+    VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    ri.renderArea = area;  // no attachments: fragments only write the volumes
+    ri.layerCount = 1;
+    vkCmdBeginRendering(cmd, &ri);
+    gpu::bind(cmd, voxelize_);
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_VOX_GRID, v.gridBuffer.handle())
+        .storageBuffer(sh::BIND_VOX_DRAWS, scene.draws.handle())
+        .storageBuffer(sh::BIND_VOX_MATERIALS, scene.materials.handle())
+        .storageImage(sh::BIND_VOX_ACCUM, v.accum.view())
+        .storageImage(sh::BIND_VOX_FLAGS, v.flags.view())
+        .push(ctx_, cmd, voxelize_);
+    VkDescriptorSet set = scene.textureTable->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, voxelize_.layout(), sh::SET_TEXTURES, 1, &set, 0,
+                            nullptr);
+    const VkViewport viewport{0, 0, float(n), float(n), 0, 1};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &area);
+    VkDeviceSize offset = 0;
+    VkBuffer vb = scene.vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    vkCmdBindIndexBuffer(cmd, scene.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    const VkShaderStageFlags vgf =
+        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
+        const render::DrawRange& r = scene.ranges[i];
+        if (r.dynamic != dynamic) continue;
+        const sh::VoxelizePush push{glm::uvec4(i, 0, 0, 0),
+                                    glm::uvec4(dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC,
+                                               hardware_ ? 0u : 1u, 0u, 0u)};
+        gpu::pushConstants(cmd, voxelize_, vgf, push);
+        vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
+    }
+    vkCmdEndRendering(cmd);
+    gpu::storageWritesVisible(cmd, kVoxelStages, kVoxelStages | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
+}
+
+}  // namespace dvsgi::vxgi

@@ -1,0 +1,42 @@
+// Conservative voxelization of the scene into the voxel attribute volume
+// (paper section V), and the per-frame clear of dynamic voxels.
+#pragma once
+
+#include "gpu/pipeline.h"
+
+namespace dvsgi::gpu {
+class GpuTimers;
+}
+namespace dvsgi::render {
+class SceneGpu;
+}
+
+namespace dvsgi::vxgi {
+
+class VoxelVolumes;
+
+enum class VoxelizeMode { Static, Dynamic };
+
+class Voxelizer {
+public:
+    // hardwareConservative: use VK_EXT_conservative_rasterization instead of
+    // the geometry-shader dilation (only when the device has it).
+    Voxelizer(const gpu::Context& ctx, const render::SceneGpu& scene, bool hardwareConservative);
+
+    // Zeroes attributes and flags: the start of a static re-voxelization.
+    void clearAll(VkCommandBuffer cmd, const VoxelVolumes& volumes, gpu::GpuTimers* timers) const;
+    // Zeroes the voxels not flagged static.
+    void clearDynamic(VkCommandBuffer cmd, const VoxelVolumes& volumes, gpu::GpuTimers* timers) const;
+    // Voxelizes the static or the dynamic draws of the scene.
+    void voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, const VoxelVolumes& volumes, VoxelizeMode mode,
+                  gpu::GpuTimers* timers) const;
+    bool hardwareConservative() const { return hardware_; }
+
+private:
+    const gpu::Context& ctx_;
+    bool hardware_;
+    gpu::Pipeline voxelize_;
+    gpu::Pipeline clear_;
+};
+
+}  // namespace dvsgi::vxgi
