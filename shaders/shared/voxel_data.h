@@ -60,6 +60,57 @@ DVSGI_CONST(uint, BIND_CLEAR_GRID, 0);
 DVSGI_CONST(uint, BIND_CLEAR_ACCUM, 1);
 DVSGI_CONST(uint, BIND_CLEAR_FLAGS, 2);
 
+// Occlusion of a light at voxels (GpuLight.shadow.z, or a global override).
+DVSGI_CONST(uint, OCCLUSION_SHADOW_MAP, 0);
+DVSGI_CONST(uint, OCCLUSION_RAYCAST_HARD, 1);
+DVSGI_CONST(uint, OCCLUSION_RAYCAST_SOFT, 2);
+DVSGI_CONST(uint, OCCLUSION_NONE, 3);
+DVSGI_CONST(uint, OCCLUSION_PER_LIGHT, 4);  // no override
+
+struct VoxelLightPush {
+    uvec4 flags;   // x light count, y 1 = normal-weighted attenuation (eq. 5), 0 = Lambert N.L (eq. 2),
+                   // z occlusion override (OCCLUSION_*), w shadows rendered (1/0)
+    vec4 params;   // x soft-shadow kappa, y shadow-map normal offset (texels)
+};
+DVSGI_CHECK_SIZE(VoxelLightPush, 32);
+
+DVSGI_CONST(uint, BIND_INJECT_GRID, 0);
+DVSGI_CONST(uint, BIND_INJECT_ACCUM, 1);
+DVSGI_CONST(uint, BIND_INJECT_LIGHTS, 2);
+DVSGI_CONST(uint, BIND_INJECT_SHADOW_VIEWS, 3);
+DVSGI_CONST(uint, BIND_INJECT_SHADOW_MAP, 4);
+DVSGI_CONST(uint, BIND_INJECT_RADIANCE, 5);
+
+// Anisotropic filtering: radiance (N^3) -> six directional volumes ((N/2)^3 + mips).
+// Directions, in volume order: -X +X -Y +Y -Z +Z (the direction light travels).
+DVSGI_CONST(uint, BIND_ANISO_SOURCE, 0);      // base: radiance; upper levels: unused
+DVSGI_CONST(uint, BIND_ANISO_SOURCE_DIRS, 1); // upper levels: six volumes at level l (array of 6)
+DVSGI_CONST(uint, BIND_ANISO_TARGET_DIRS, 2); // six volumes at the level written (array of 6)
+
+struct AnisoPush {
+    uvec4 sizes;  // x target size (voxels per edge), y 1 = base level (read radiance)
+};
+DVSGI_CHECK_SIZE(AnisoPush, 16);
+
+// Cone tracing through the filtered volumes (shared by the voxel bounce and
+// the per-pixel gather).
+struct ConeParams {
+    vec4 trace;  // x step factor beta, y minimum step (voxels), z maximum distance (m), w origin offset (voxels)
+};
+DVSGI_CHECK_SIZE(ConeParams, 16);
+
+struct BouncePush {
+    ConeParams cone;
+};
+DVSGI_CHECK_SIZE(BouncePush, 16);
+
+DVSGI_CONST(uint, BIND_CONE_GRID, 0);
+DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear
+DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips (array of 6)
+DVSGI_CONST(uint, BIND_BOUNCE_ACCUM, 3);
+DVSGI_CONST(uint, BIND_BOUNCE_DIRECT, 4);     // direct light + emission (storage, read)
+DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, write)
+
 // Voxel debug view (VoxelViewPush.mode.x).
 DVSGI_CONST(uint, VIEW_ALBEDO, 0);
 DVSGI_CONST(uint, VIEW_NORMAL, 1);

@@ -167,12 +167,27 @@ void Pipeline::reset() {
 }
 
 Descriptors& Descriptors::storageImage(uint32_t binding, VkImageView view) {
-    entries_.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}, {}});
+    entries_.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}}, {}});
+    return *this;
+}
+
+Descriptors& Descriptors::storageImages(uint32_t binding, std::span<const VkImageView> views) {
+    Entry e{binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {}, {}};
+    for (VkImageView v : views) e.images.push_back({VK_NULL_HANDLE, v, VK_IMAGE_LAYOUT_GENERAL});
+    entries_.push_back(std::move(e));
+    return *this;
+}
+
+Descriptors& Descriptors::sampledImages(uint32_t binding, std::span<const VkImageView> views, VkSampler sampler,
+                                        VkImageLayout layout) {
+    Entry e{binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, {}};
+    for (VkImageView v : views) e.images.push_back({sampler, v, layout});
+    entries_.push_back(std::move(e));
     return *this;
 }
 
 Descriptors& Descriptors::sampledImage(uint32_t binding, VkImageView view, VkSampler sampler, VkImageLayout layout) {
-    entries_.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout}, {}});
+    entries_.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {{sampler, view, layout}}, {}});
     return *this;
 }
 
@@ -192,14 +207,14 @@ void Descriptors::push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& 
     for (const Entry& e : entries_) {
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstBinding = e.binding;
-        w.descriptorCount = 1;
         w.descriptorType = e.type;
         const bool isBuffer =
             e.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER || e.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        w.descriptorCount = isBuffer ? 1 : uint32_t(e.images.size());
         if (isBuffer)
             w.pBufferInfo = &e.buffer;
         else
-            w.pImageInfo = &e.image;
+            w.pImageInfo = e.images.data();
         writes.push_back(w);
     }
     ctx.cmdPushDescriptorSet(cmd, pipeline.bindPoint(), pipeline.layout(), 0, uint32_t(writes.size()), writes.data());

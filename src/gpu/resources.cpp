@@ -164,7 +164,7 @@ Sampler::Sampler(const Context& ctx, const SamplerDesc& d) : device_(ctx.device)
     sci.minFilter = d.filter;
     sci.mipmapMode = d.mipmap;
     sci.addressModeU = sci.addressModeV = sci.addressModeW = d.address;
-    sci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
+    sci.borderColor = d.transparentBorder ? VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK : VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
     sci.maxLod = VK_LOD_CLAMP_NONE;
     sci.compareEnable = d.compare;
     sci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;

@@ -15,6 +15,7 @@
 #include "render/scene_gpu.h"
 #include "render/shadows.h"
 #include "shared/scene_data.h"
+#include "vxgi/voxel_light.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::render {
@@ -66,6 +67,9 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid);
         voxelizer_ = std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
+        inject_ = std::make_unique<vxgi::InjectPass>(ctx, grid.n);
+        aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
+        bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
     } else if (settings.view.mode != ViewMode::Final) {
         throw std::runtime_error("--view: the voxel views need voxels (--voxels 0 turns them off)");
     }
@@ -74,8 +78,11 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
 
 void Renderer::uploadLights() {
     const std::vector<glm::mat4> world = scene::worldMatrices(scene_);
-    const LightSetup setup = setupLights(scene::placedLights(scene_, world), sceneGpu_->bounds,
-                                         settings_.shadowMapSize, settings_.shadows);
+    const std::vector<scene::PlacedLight> placed = scene::placedLights(scene_, world);
+    LightSetup setup = setupLights(placed, sceneGpu_->bounds, settings_.shadowMapSize, settings_.shadows);
+    for (size_t i = 0; i < placed.size(); ++i)
+        for (const auto& [name, mode] : settings_.lightOcclusion)
+            if (placed[i].light.name == name) setup.lights[i].shadow.z = uint32_t(mode);
     const VkDeviceSize lightBytes = setup.lights.size() * sizeof(sh::GpuLight);
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
     if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {
@@ -125,6 +132,19 @@ void Renderer::updateFrameConstants() {
     gpu::uploadBuffer(ctx_, *frame_, &f, sizeof(f));
 }
 
+void Renderer::recordVoxelLight(VkCommandBuffer cmd) {
+    gpu::GpuTimers* t = timers_.get();
+    const vxgi::ShadowInputs shadows{lights_->handle(), lightCount_,         views_->handle(),
+                                     shadows_->map().view(), shadows_->sampler().handle(), settings_.shadows};
+    inject_->record(cmd, *volumes_, shadows, settings_.voxelLight, t);
+    inject_->copyToRadiance(cmd, *volumes_);
+    aniso_->record(cmd, *volumes_, t, "voxel filtering");
+    for (uint32_t b = 0; b < settings_.voxelLight.bounces; ++b) {
+        bounce_->record(cmd, *volumes_, inject_->direct, settings_.voxelLight, t);
+        aniso_->record(cmd, *volumes_, t, "voxel filtering (bounce)");
+    }
+}
+
 FrameStats Renderer::renderFrame() {
     timers_->reset();
     gpu::GpuTimers* t = timers_.get();
@@ -138,11 +158,12 @@ FrameStats Renderer::renderFrame() {
             voxelizer_->clearDynamic(cmd, *volumes_, t);
             voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
         }
+        shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
+        if (volumes_) recordVoxelLight(cmd);
         if (settings_.view.mode != ViewMode::Final) {
             voxelView_->record(cmd, *volumes_, *frame_, composite_->output, settings_.view, t);
             return;
         }
-        shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
         gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
         lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, t);
         composite_->record(cmd, lighting_->direct, t);
@@ -183,6 +204,7 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});
         items.push_back({"voxel static flags", volumes_->flags.memorySize()});
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
+        items.push_back({"voxel direct light", inject_->direct.memorySize()});
         uint64_t directional = 0;
         for (const gpu::Image& d : volumes_->directional) directional += d.memorySize();
         items.push_back({"directional volumes", directional});

@@ -13,6 +13,7 @@
 #include "render/voxel_view.h"
 #include "scene/scene.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxel_light.h"
 
 namespace dvsgi::gpu {
 class Context;
@@ -34,6 +35,10 @@ struct RenderSettings {
     glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
     bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
     ViewSettings view;
+    vxgi::VoxelLightSettings voxelLight;
+    // Per-light occlusion mode for the voxel light pass, by light name
+    // (lights not listed use shadow maps).
+    std::vector<std::pair<std::string, vxgi::Occlusion>> lightOcclusion;
 };
 
 struct FrameStats {
@@ -55,6 +60,9 @@ class VoxelViewPass;
 }  // namespace dvsgi::render
 namespace dvsgi::vxgi {
 class Voxelizer;
+class InjectPass;
+class AnisoFilterPass;
+class BouncePass;
 }
 namespace dvsgi::render {
 
@@ -77,6 +85,8 @@ public:
 
     const vxgi::VoxelVolumes* volumes() const { return volumes_.get(); }
     const vxgi::Voxelizer* voxelizer() const { return voxelizer_.get(); }
+    const vxgi::InjectPass* injectPass() const { return inject_.get(); }
+    const vxgi::BouncePass* bouncePass() const { return bounce_.get(); }
     image::ImageRGBA32F readOutput() const;    // linear radiance, output size
     std::vector<MemoryItem> memory() const;
     const scene::PlacedCamera& camera() const { return camera_; }
@@ -86,6 +96,7 @@ public:
 private:
     void updateFrameConstants();
     void uploadLights();
+    void recordVoxelLight(VkCommandBuffer cmd);
 
     const gpu::Context& ctx_;
     scene::Scene scene_;  // own copy: animation and edits change it
@@ -102,6 +113,9 @@ private:
     std::unique_ptr<vxgi::VoxelVolumes> volumes_;
     std::unique_ptr<vxgi::Voxelizer> voxelizer_;
     std::unique_ptr<VoxelViewPass> voxelView_;
+    std::unique_ptr<vxgi::InjectPass> inject_;
+    std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
+    std::unique_ptr<vxgi::BouncePass> bounce_;
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     std::unique_ptr<gpu::GpuTimers> timers_;

@@ -1,0 +1,63 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared/scene_data.h"
+#include "shared/voxel_data.h"
+
+// Direct light per occupied voxel (paper section VI), visible or not: Lambert
+// radiance rho/pi * E * attenuation * visibility for every light, plus the
+// voxel's emitted radiance. Writes RGBA16F radiance with alpha = opacity (1 for
+// occupied voxels).
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(set = 0, binding = BIND_INJECT_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_INJECT_ACCUM, r32f) uniform readonly image3D accum;
+layout(set = 0, binding = BIND_INJECT_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = BIND_INJECT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
+layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
+layout(set = 0, binding = BIND_INJECT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
+layout(push_constant) uniform Push { VoxelLightPush pc; };
+
+#include "lib/voxel_attributes.glsl"
+#include "lib/lights.glsl"
+#include "lib/shadow_map.glsl"
+#include "lib/voxel_trace.glsl"
+
+const float PI = 3.14159265358979;
+
+void main() {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    int N = int(grid.dims.x);
+    if (any(greaterThanEqual(v, ivec3(N)))) return;
+    if (voxelCount(v) <= 0.0) {
+        imageStore(outRadiance, v, vec4(0.0));
+        return;
+    }
+    vec3 albedo = voxelAlbedo(v);
+    vec3 pos, neg;
+    voxelNormalWeights(v, pos, neg);
+    vec3 n = voxelNormal(v);
+    float s = grid.originSize.w;
+    // Lit position: the voxel centre pushed half a voxel along its normal.
+    vec3 P = grid.originSize.xyz + (vec3(v) + 0.5) * s + n * (0.5 * s);
+
+    vec3 radiance = voxelEmission(v);
+    for (uint i = 0u; i < pc.flags.x; ++i) {
+        GpuLight light = lights[i];
+        vec3 L;
+        float dist;
+        vec3 E = lightIrradiance(light, P, L, dist);
+        // Eq. 5 generalized to signed weights: sum over axes of the weight of
+        // the normals facing the light along that axis times the cosine there.
+        // For a single normal it is exactly W_x D_x + W_y D_y + W_z D_z.
+        float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : max(dot(n, L), 0.0);
+        if (att <= 0.0 || all(equal(E, vec3(0.0)))) continue;
+        uint mode = pc.flags.z != OCCLUSION_PER_LIGHT ? pc.flags.z : light.shadow.z;
+        float vis = 1.0;
+        if (mode == OCCLUSION_SHADOW_MAP && pc.flags.w != 0u)
+            vis = shadowVisibility(light, P, n, pc.params.y);
+        else if (mode == OCCLUSION_RAYCAST_HARD || mode == OCCLUSION_RAYCAST_SOFT)
+            vis = voxelRayVisibility(P, L, dist, mode == OCCLUSION_RAYCAST_SOFT, pc.params.x);
+        radiance += albedo / PI * E * att * vis;
+    }
+    imageStore(outRadiance, v, vec4(radiance, 1.0));
+}

@@ -1,0 +1,83 @@
+// The one cone tracer of dvsgi (paper section VIII), used by the voxel bounce
+// and the per-pixel gather. Needs `grid` (VoxelGrid) and `directional[6]`
+// (sampler3D, order -X +X -Y +Y -Z +Z); with CONE_USE_RADIANCE_VOLUME also
+// `radianceVolume` (sampler3D), blended in for cone diameters of 1-2 voxels.
+
+// Directional sample for a cone marching along unit `dir`: the three volumes
+// computed for rays travelling that way, weighted by dir^2 (sum 1). All six are
+// fetched and weighted (zero for the three facing away) so the sampling stays
+// branch-free, which is faster on lavapipe than picking volumes by branches.
+vec4 sampleDirectional(vec3 uvw, vec3 dir, float level) {
+    vec3 w = dir * dir;
+    vec3 neg = w * vec3(lessThan(dir, vec3(0.0)));
+    vec3 pos = w - neg;
+    return neg.x * textureLod(directional[0], uvw, level) + pos.x * textureLod(directional[1], uvw, level) +
+           neg.y * textureLod(directional[2], uvw, level) + pos.y * textureLod(directional[3], uvw, level) +
+           neg.z * textureLod(directional[4], uvw, level) + pos.z * textureLod(directional[5], uvw, level);
+}
+
+// Front-to-back accumulation along the cone from `origin` (world) along unit
+// `dir`, half-angle tangent `tanHalf`. Returns premultiplied radiance (rgb,
+// W m^-2 sr^-1 as seen from the origin) and accumulated opacity (a).
+// params.trace: x step factor beta (step = beta * diameter), y minimum step in
+// voxels, z maximum distance in metres, w distance of the first sample in voxels.
+vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, ConeParams params) {
+    float s = grid.originSize.w;
+    float extent = s * float(grid.dims.x);
+    float maxLevel = float(grid.dims.z) - 1.0;
+    vec4 acc = vec4(0.0);
+    float t = params.trace.w * s;
+    for (int i = 0; i < 1024 && t < params.trace.z && acc.a < 0.995; ++i) {
+        float d = max(2.0 * t * tanHalf, s);  // diameter = 2 t tan(theta/2), at least a voxel
+        float level = log2(d / s);
+        vec3 uvw = (origin + dir * t - grid.originSize.xyz) / extent;
+        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
+        // Directional level 0 voxels are two voxels wide.
+        vec4 smp = sampleDirectional(uvw, dir, clamp(level - 1.0, 0.0, maxLevel));
+#ifdef CONE_USE_RADIANCE_VOLUME
+        if (level < 1.0) smp = mix(textureLod(radianceVolume, uvw, 0.0), smp, level);
+#endif
+        float stepLen = max(params.trace.x * d, params.trace.y * s);
+        // A sample's opacity stands for a slab one diameter thick: rescale it
+        // to the step actually taken so results do not depend on beta.
+        float a = clamp(smp.a, 0.0, 1.0);
+        float ac = 1.0 - pow(1.0 - min(a, 0.9999), stepLen / d);
+        vec3 c = a > 1e-6 ? smp.rgb * (ac / a) : vec3(0.0);
+        acc.rgb += (1.0 - acc.a) * c;
+        acc.a += (1.0 - acc.a) * ac;
+        t += stepLen;
+    }
+    return acc;
+}
+
+// Cone sets over the hemisphere around n, cosine-weighted and normalized so a
+// uniform environment of radiance L gives irradiance pi * L. Returns the
+// irradiance (W/m^2) and the mean occlusion in `occlusion`.
+const float TAN_30 = 0.57735027;
+
+void coneBasis(vec3 n, out vec3 t, out vec3 b) {
+    vec3 up = abs(n.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    t = normalize(cross(up, n));
+    b = cross(n, t);
+}
+
+// The paper's six 60-degree cones: one along n, five at 60 degrees from it.
+vec3 gatherIrradiance6(vec3 origin, vec3 n, ConeParams params, out float occlusion) {
+    vec3 t, b;
+    coneBasis(n, t, b);
+    const float sin60 = 0.8660254, cos60 = 0.5;
+    // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
+    const float wCenter = 3.14159265 / 3.5, wSide = 3.14159265 * 0.5 / 3.5;
+    vec4 c = traceCone(origin, n, TAN_30, params);
+    vec3 E = wCenter * c.rgb;
+    occlusion = wCenter * c.a;
+    for (int i = 0; i < 5; ++i) {
+        float phi = 6.28318531 * float(i) / 5.0;
+        vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
+        vec4 s = traceCone(origin, dir, TAN_30, params);
+        E += wSide * s.rgb;
+        occlusion += wSide * s.a;
+    }
+    occlusion /= 3.14159265;
+    return E;
+}

@@ -1,0 +1,28 @@
+// Shadow rays through the voxel attribute volume (paper section VI-C). Needs
+// `grid` and `accum` (see voxel_attributes.glsl).
+
+// Visibility in [0, 1] from world position P toward the light along L, up to
+// `dist` metres. Hard: 0 at the first occupied voxel. Soft: nu += (1 - nu) *
+// kappa / t for every occupied voxel met, t = distance in voxels; returns 1 - nu.
+float voxelRayVisibility(vec3 P, vec3 L, float dist, bool soft, float kappa) {
+    float s = grid.originSize.w;
+    int N = int(grid.dims.x);
+    vec3 p = (P - grid.originSize.xyz) / s;  // voxel units
+    ivec3 self = ivec3(floor(p));
+    float maxT = min(dist / s, 2.0 * float(N));
+    float nu = 0.0;
+    ivec3 last = self;
+    // Half-voxel steps visit every voxel the ray crosses closely enough for a
+    // coarse occlusion test; each voxel counts once.
+    for (float t = 1.0; t < maxT; t += 0.5) {
+        ivec3 v = ivec3(floor(p + L * t));
+        if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(N)))) break;
+        if (v == last || v == self) continue;
+        last = v;
+        if (voxelCount(v) <= 0.0) continue;
+        if (!soft) return 0.0;
+        nu += (1.0 - nu) * min(kappa / t, 1.0);
+        if (nu > 0.999) return 0.0;
+    }
+    return 1.0 - nu;
+}

@@ -1,0 +1,61 @@
+#include <array>
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/timers.h"
+#include "vxgi/voxel_light.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::vxgi {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+const uint32_t kBounce[] = {
+#include "shaders/bounce.comp.inc"
+};
+
+}  // namespace
+
+BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
+    gpu::SamplerDesc sd;
+    sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    sd.transparentBorder = true;
+    sampler_ = gpu::Sampler(ctx, sd);
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    gpu::LayoutDesc layout;
+    layout.bindings = {{sh::BIND_CONE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                       {sh::BIND_CONE_DIRECTIONAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs, 6},
+                       {sh::BIND_BOUNCE_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_BOUNCE_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    layout.pushConstantBytes = sizeof(sh::BouncePush);
+    layout.pushConstantStages = cs;
+    pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
+}
+
+void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::Image& direct,
+                        const VoxelLightSettings& settings, gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
+    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    std::array<VkImageView, 6> dirs;
+    for (uint32_t d = 0; d < 6; ++d) dirs[d] = v.directional[d].view();
+    gpu::bind(cmd, pipeline_);
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
+        .sampledImages(sh::BIND_CONE_DIRECTIONAL, dirs, sampler_.handle(), VK_IMAGE_LAYOUT_GENERAL)
+        .storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
+        .storageImage(sh::BIND_BOUNCE_DIRECT, direct.view())
+        .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
+        .push(ctx_, cmd, pipeline_);
+    sh::BouncePush push{settings.bounceCone};
+    // The default maximum distance is the grid's diagonal.
+    if (push.cone.trace.z > 1e29f) push.cone.trace.z = v.grid.voxelSize * float(v.grid.n) * 1.7320508f;
+    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    const uint32_t groups = gpu::groupCount(v.grid.n, 4);
+    vkCmdDispatch(cmd, groups, groups, groups);
+    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+}
+
+}  // namespace dvsgi::vxgi
