@@ -183,6 +183,35 @@ const std::vector<OptionSpec>& optionSpecs() {
                  }
              badValue(opt, "one of -x +x -y +y -z +z", v);
          }},
+        {"--bounces", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.bounces = uint32_t(parseUnsigned(opt, v, 0, 16, "an integer in 0..16"));
+         }},
+        {"--normal-weighted", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "on" && v != "off") badValue(opt, "on or off", v);
+             o.normalWeighted = v == "on";
+         }},
+        {"--voxel-occlusion", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "shadowmap" && v != "raycast" && v != "soft" && v != "none" && v != "per-light")
+                 badValue(opt, "shadowmap, raycast, soft, none or per-light", v);
+             o.voxelOcclusion = v;
+         }},
+        {"--light-occlusion", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             const size_t eq = v.rfind('=');
+             const char* expected = "NAME=shadowmap|raycast|soft|none";
+             if (eq == std::string_view::npos || eq == 0) badValue(opt, expected, v);
+             const std::string_view mode = v.substr(eq + 1);
+             if (mode != "shadowmap" && mode != "raycast" && mode != "soft" && mode != "none")
+                 badValue(opt, expected, v);
+             o.lightOcclusion.emplace_back(std::string(v.substr(0, eq)), std::string(mode));
+         }},
+        {"--soft-kappa", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.softKappa = parseFloat(opt, v, 0.0f, 100.0f, "a number in 0..100");
+         }},
         {"--frames", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.frames = uint32_t(parseUnsigned(opt, v, 1, 100000, "an integer in 1..100000"));
@@ -199,6 +228,39 @@ const std::vector<OptionSpec>& optionSpecs() {
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.addModelSize = parseFloat(opt, v, 1e-4f, 1e4f, "a size in metres in 0.0001..10000");
          }},
+        {"--bench-out", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             requireExtension(opt, v, ".json", "a .json file name");
+             o.benchOut = v;
+         }},
+        {"--shared", true,
+         [](RenderOptions& o, std::string_view, std::string_view v) { o.sharedDir = v; }},
+        {"--bench-voxels", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             const char* expected = "a comma-separated list of powers of two in 32..512";
+             std::vector<uint32_t> list;
+             std::string_view rest = v;
+             while (true) {
+                 const size_t comma = rest.find(',');
+                 const std::string_view item = rest.substr(0, comma);
+                 const uint64_t n = parseUnsigned(opt, item, 32, 512, expected);
+                 if ((n & (n - 1)) != 0) badValue(opt, expected, v);
+                 list.push_back(uint32_t(n));
+                 if (comma == std::string_view::npos) break;
+                 rest = rest.substr(comma + 1);
+             }
+             o.benchVoxels = list;
+         }},
+        {"--bench-frames", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.benchFrames = uint32_t(parseUnsigned(opt, v, 1, 10000, "an integer in 1..10000"));
+         }},
+        {"--bench-warmup", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.benchWarmup = uint32_t(parseUnsigned(opt, v, 0, 1000, "an integer in 0..1000"));
+         }},
+        {"--bench-quick", false,
+         [](RenderOptions& o, std::string_view, std::string_view) { o.benchQuick = true; }},
     };
     return specs;
 }
@@ -342,6 +404,17 @@ std::string usageText() {
            "  --view-mip M         mip level for voxels:directional (default 0)\n"
            "  --view-direction D   -x +x -y +y -z +z: which directional volume (default -x)\n"
            "\n"
+           "Voxel light:\n"
+           "  --bounces K          extra bounces computed per voxel by cone tracing, 0..16\n"
+           "                       (default 1, as in the paper; 0 = direct light only)\n"
+           "  --normal-weighted on|off  normal-weighted attenuation (paper eq. 5, default on)\n"
+           "                       or plain Lambert N.L with the averaged normal (eq. 2)\n"
+           "  --voxel-occlusion M  occlusion of lights at voxels for all lights: shadowmap,\n"
+           "                       raycast (hard), soft (raycast, nu += (1-nu) kappa / t), none;\n"
+           "                       default per-light (each light's own mode, shadowmap unless set)\n"
+           "  --light-occlusion NAME=M  the mode of one light (repeatable)\n"
+           "  --soft-kappa K       kappa of soft raycast shadows, t in voxels (default 0.5)\n"
+           "\n"
            "Animation and dynamic objects:\n"
            "  --frames K           render K frames of the glTF animations, K*time-step seconds,\n"
            "                       and write the last; a '#' run in --out (e.g. f_###.exr)\n"
@@ -353,6 +426,18 @@ std::string usageText() {
            "                       a circle through the scene, one turn per 120 frames\n"
            "  --add-model-size M   its largest extent in metres (default: 1/5 of the scene)\n"
            "  --help, -h           this text\n"
+           "\n"
+           "Benchmark (dvsgi bench; see docs/benchmarks.md):\n"
+           "  Without SCENE: the paper's Table II suite, Cornell box, Sibenik and Crytek Sponza\n"
+           "  from the shared folder, each with the Stanford bunny as the moving dynamic object\n"
+           "  (--add-model replaces the bunny). Images are 640x360 unless --width/--height are given.\n"
+           "  --bench-out FILE.json  results (default out/bench.json); a markdown table goes to stdout\n"
+           "  --shared DIR         the shared data folder holding scenes/ (default ../shared)\n"
+           "  --bench-voxels LIST  voxel resolutions, e.g. 128,256 (default 128,256)\n"
+           "  --bench-frames K     measured frames per scene and resolution (default 10); each\n"
+           "                       re-runs static voxelization. Median, min and max per pass\n"
+           "  --bench-warmup W     frames rendered before measuring, not recorded (default 2)\n"
+           "  --bench-quick        Cornell box only, 32^3, 2 frames, 160x90 (a smoke test)\n"
            "\n"
            "Exit status: 0 on success, 2 for a bad command line, another non-zero value\n"
            "for any other failure.\n";

@@ -4,6 +4,7 @@
 #include <exception>
 #include <new>
 
+#include "bench_command.h"
 #include "gpu/check.h"
 #include "image/image_io.h"
 #include "options.h"
@@ -25,9 +26,7 @@ int main(int argc, char** argv) {
             case app::Command::View:
                 std::fprintf(stderr, "dvsgi: 'view' is not available in this build yet (issue #6)\n");
                 return 2;
-            case app::Command::Bench:
-                std::fprintf(stderr, "dvsgi: 'bench' is not available in this build yet (issue #3-#5)\n");
-                return 2;
+            case app::Command::Bench: return app::runBench(parsed.render, argc, argv);
         }
     } catch (const scene::LoadError& e) {
         std::fprintf(stderr, "dvsgi: %s\n", e.what());

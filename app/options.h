@@ -38,12 +38,27 @@ struct RenderOptions {
     uint32_t viewMip = 0;
     uint32_t viewDirection = 0;   // 0..5 = -X +X -Y +Y -Z +Z
 
+    // Voxel light (issue #4).
+    uint32_t bounces = 1;            // extra bounces per voxel
+    bool normalWeighted = true;      // eq. 5 (on) or Lambert N.L (off)
+    std::string voxelOcclusion = "per-light";  // shadowmap|raycast|soft|none|per-light
+    std::vector<std::pair<std::string, std::string>> lightOcclusion;  // NAME=mode
+    float softKappa = 0.5f;
+
     // Animation and dynamic objects.
     uint32_t frames = 1;          // render frames 0..K-1, write the last (or each: '#' in --out)
     float timeStep = 1.0f / 30.0f;  // seconds between frames
     std::vector<std::string> dynamicNodes;  // node names marked dynamic
     std::string addModel;         // a model that moves on a circle through the scene (dynamic)
     float addModelSize = 0.0f;    // its largest extent in metres; 0 = 1/5 of the scene
+
+    // `dvsgi bench` only (app/bench_command.cpp); render and view ignore these.
+    std::string benchOut = "out/bench.json";
+    std::string sharedDir = "../shared";     // holds scenes/ (the benchmark scenes)
+    std::vector<uint32_t> benchVoxels = {128, 256};
+    uint32_t benchFrames = 10;    // measured frames per (scene, voxel resolution)
+    uint32_t benchWarmup = 2;     // frames rendered and discarded before those
+    bool benchQuick = false;      // Cornell box only, 32^3, 2 frames, 160x90
 };
 
 struct ParseResult {

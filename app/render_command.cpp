@@ -46,6 +46,14 @@ render::ViewMode toViewMode(ViewKind k) {
     }
 }
 
+vxgi::Occlusion occlusionMode(const std::string& m) {
+    if (m == "shadowmap") return vxgi::Occlusion::ShadowMap;
+    if (m == "raycast") return vxgi::Occlusion::RaycastHard;
+    if (m == "soft") return vxgi::Occlusion::RaycastSoft;
+    if (m == "none") return vxgi::Occlusion::None;
+    return vxgi::Occlusion::PerLight;
+}
+
 void markDynamic(scene::Scene& s, const std::vector<std::string>& names) {
     for (const std::string& name : names) {
         bool found = false;
@@ -158,6 +166,11 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.view.mode = toViewMode(o.view);
     rs.view.mip = o.viewMip;
     rs.view.direction = o.viewDirection;
+    rs.voxelLight.bounces = o.bounces;
+    rs.voxelLight.normalWeighted = o.normalWeighted;
+    rs.voxelLight.softKappa = o.softKappa;
+    rs.voxelLight.occlusion = occlusionMode(o.voxelOcclusion);
+    for (const auto& [name, mode] : o.lightOcclusion) rs.lightOcclusion.emplace_back(name, occlusionMode(mode));
     return rs;
 }
 

@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -49,6 +50,12 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
                             std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                             "; the horizontal field of view follows the image");
 
+    for (const auto& entry : settings.lightOcclusion) {
+        const bool found = std::any_of(scene.lights.begin(), scene.lights.end(),
+                                       [&](const scene::Light& l) { return l.name == entry.first; });
+        if (!found) throw std::runtime_error("--light-occlusion: " + scene.source + " has no light named '" +
+                                             entry.first + "'");
+    }
     const uint32_t iw = settings.width * settings.supersample, ih = settings.height * settings.supersample;
     sceneGpu_ = std::make_unique<SceneGpu>(ctx, scene);
     uploadLights();

@@ -1,0 +1,496 @@
+#include "bench_command.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string_view>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+#include <vulkan/vulkan.h>
+
+#include "gpu/context.h"
+#include "image/image_io.h"
+#include "render/renderer.h"
+#include "render_command.h"
+#include "scene/load.h"
+#include "vxgi/voxelize.h"
+
+namespace dvsgi::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct BenchScene {
+    std::string name;  // short label: table column and JSON "scene"
+    std::string path;
+};
+
+// Median, minimum, maximum and mean of a list of samples.
+struct Summary {
+    double median = 0.0, min = 0.0, max = 0.0, mean = 0.0;
+};
+
+Summary summarize(std::vector<double> v) {
+    Summary s;
+    if (v.empty()) return s;
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    s.min = v.front();
+    s.max = v.back();
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    s.mean = sum / double(n);
+    return s;
+}
+
+nlohmann::json summaryJson(const Summary& s, const std::vector<double>& samples) {
+    return {{"median_ms", s.median}, {"min_ms", s.min}, {"max_ms", s.max}, {"mean_ms", s.mean}, {"samples_ms", samples}};
+}
+
+// Per-pass samples in the order the passes first appeared, so passes added to
+// the renderer later show up without changes here.
+struct PassSamples {
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<double>> samples;
+    void add(const std::string& name, double ms) {
+        auto [it, inserted] = samples.try_emplace(name);
+        if (inserted) order.push_back(name);
+        it->second.push_back(ms);
+    }
+};
+
+struct Measurement {
+    std::string scene;
+    std::string file;
+    uint32_t voxels = 0;
+    std::string status;  // "ok", "failed", "skipped"
+    std::string error;
+    uint32_t frames = 0;
+    PassSamples passes;
+    std::vector<double> frameMs;  // the whole frame ("frame" timer)
+    std::vector<double> wallMs;   // host time of renderFrame (record, submit, wait)
+    uint64_t staticTriangles = 0, dynamicTriangles = 0;
+    uint64_t memoryBytes = 0;
+    nlohmann::json detail;  // grid, memory items, setup times
+};
+
+bool givenOnCommandLine(int argc, const char* const* argv, std::string_view option) {
+    // Values never start with "--" (the parser rejects that), so a plain scan
+    // up to "--" finds exactly the options that were given.
+    for (int i = 2; i < argc; ++i) {
+        const std::string_view a = argv[i] ? argv[i] : "";
+        if (a == "--") break;
+        if (a == option || (a.starts_with(option) && a.size() > option.size() && a[option.size()] == '='))
+            return true;
+    }
+    return false;
+}
+
+std::string commandLine(int argc, const char* const* argv) {
+    std::string s;
+    for (int i = 0; i < argc; ++i) {
+        if (i) s += ' ';
+        const std::string a = argv[i] ? argv[i] : "";
+        const bool plain = !a.empty() && a.find_first_of(" \t\"'\\$`") == std::string::npos;
+        s += plain ? a : "'" + a + "'";
+    }
+    return s;
+}
+
+std::string utcNow() {
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+std::string hostCpu() {
+    std::ifstream f("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(f, line))
+        if (line.starts_with("model name")) {
+            const size_t colon = line.find(':');
+            if (colon != std::string::npos) {
+                size_t b = line.find_first_not_of(" \t", colon + 1);
+                return b == std::string::npos ? "" : line.substr(b);
+            }
+        }
+    return "";
+}
+
+const char* deviceTypeName(VkPhysicalDeviceType t) {
+    switch (t) {
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
+        default: return "other";
+    }
+}
+
+std::string versionString(uint32_t v) {
+    return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
+           std::to_string(VK_API_VERSION_PATCH(v));
+}
+
+nlohmann::json deviceJson(const gpu::Context& ctx) {
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    props2.pNext = &driver;
+    vkGetPhysicalDeviceProperties2(ctx.physical, &props2);
+    uint64_t deviceLocal = 0;
+    for (uint32_t i = 0; i < ctx.memory.memoryHeapCount; ++i)
+        if (ctx.memory.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            deviceLocal = std::max<uint64_t>(deviceLocal, ctx.memory.memoryHeaps[i].size);
+    return {{"name", ctx.deviceName},
+            {"type", deviceTypeName(ctx.properties.deviceType)},
+            {"vendor_id", ctx.properties.vendorID},
+            {"device_id", ctx.properties.deviceID},
+            {"api_version", versionString(ctx.properties.apiVersion)},
+            {"driver_name", std::string(driver.driverName)},
+            {"driver_info", std::string(driver.driverInfo)},
+            {"driver_version", ctx.properties.driverVersion},
+            {"device_local_heap_bytes", deviceLocal},
+            {"conservative_rasterization", ctx.features.conservativeRaster}};
+}
+
+// Static and dynamic triangles as the renderer splits them: a draw is dynamic
+// when its node or any ancestor is.
+void countTriangles(const scene::Scene& s, uint64_t& staticTris, uint64_t& dynamicTris) {
+    staticTris = dynamicTris = 0;
+    for (const scene::DrawItem& it : scene::drawItems(s, scene::worldMatrices(s))) {
+        bool dynamic = false;
+        for (int n = it.node; n >= 0 && size_t(n) < s.nodes.size(); n = s.nodes[size_t(n)].parent)
+            dynamic = dynamic || s.nodes[size_t(n)].dynamic;
+        const uint64_t tris = s.primitives[it.primitive].indices.size() / 3;
+        (dynamic ? dynamicTris : staticTris) += tris;
+    }
+}
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Renders warm-up frames, then `frames` measured frames, each with static
+// voxelization forced so every frame reports "voxelize static". Throws on any
+// failure (e.g. out of device memory); the caller records it.
+void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o, uint32_t warmup,
+             uint32_t frames, Measurement& m, std::vector<std::string>& seenWarnings) {
+    render::RenderSettings rs = settingsForOptions(o);
+    const auto setupStart = Clock::now();
+    render::Renderer renderer(ctx, scene, rs);
+    const double setupMs = msSince(setupStart);
+    for (const std::string& w : renderer.warnings())
+        if (std::find(seenWarnings.begin(), seenWarnings.end(), w) == seenWarnings.end()) {
+            std::fprintf(stderr, "warning: %s\n", w.c_str());
+            seenWarnings.push_back(w);
+        }
+
+    const auto warmStart = Clock::now();
+    uint32_t frame = 0;
+    for (; frame < warmup; ++frame) {
+        renderer.setTime(float(frame) * o.timeStep);
+        renderer.renderFrame();
+    }
+    const double warmupMs = msSince(warmStart);
+
+    for (uint32_t i = 0; i < frames; ++i, ++frame) {
+        renderer.setTime(float(frame) * o.timeStep);
+        renderer.markStaticDirty();
+        const auto start = Clock::now();
+        const render::FrameStats stats = renderer.renderFrame();
+        m.wallMs.push_back(msSince(start));
+        m.frameMs.push_back(stats.gpuMs);
+        for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);
+    }
+    m.frames = frames;
+
+    nlohmann::json memory = nlohmann::json::object();
+    m.memoryBytes = 0;
+    for (const render::MemoryItem& item : renderer.memory()) {
+        memory[item.name] = item.bytes;
+        m.memoryBytes += item.bytes;
+    }
+    m.detail["memory_bytes"] = memory;
+    m.detail["renderer_setup_ms"] = setupMs;
+    m.detail["warmup_frames"] = warmup;
+    m.detail["warmup_ms"] = warmupMs;
+    m.detail["triangles_renderer"] = renderer.triangleCount();
+    if (const vxgi::VoxelVolumes* v = renderer.volumes()) {
+        m.detail["voxel_grid"] = {
+            {"n", v->grid.n},
+            {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
+            {"voxel_size", v->grid.voxelSize},
+            {"conservative", renderer.voxelizer() && renderer.voxelizer()->hardwareConservative() ? "hardware"
+                                                                                                  : "geometry-shader"}};
+    }
+}
+
+nlohmann::json measurementJson(const Measurement& m) {
+    nlohmann::json j = {{"scene", m.scene}, {"file", m.file}, {"voxels", m.voxels}, {"status", m.status}};
+    if (!m.error.empty()) j["error"] = m.error;
+    if (m.status != "ok") return j;
+    j["frames"] = m.frames;
+    j["triangles"] = {{"static", m.staticTriangles},
+                      {"dynamic", m.dynamicTriangles},
+                      {"total", m.staticTriangles + m.dynamicTriangles}};
+    j["gpu_memory_bytes"] = m.memoryBytes;
+    for (const auto& [key, value] : m.detail.items()) j[key] = value;
+    nlohmann::json passes = nlohmann::json::array();
+    for (const std::string& name : m.passes.order) {
+        const std::vector<double>& s = m.passes.samples.at(name);
+        nlohmann::json p = summaryJson(summarize(s), s);
+        p["name"] = name;
+        p["count"] = s.size();  // < frames: the pass did not run in every frame
+        passes.push_back(p);
+    }
+    j["passes"] = passes;
+    j["frame_gpu"] = summaryJson(summarize(m.frameMs), m.frameMs);
+    j["frame_wall"] = summaryJson(summarize(m.wallMs), m.wallMs);
+    return j;
+}
+
+std::string cell(const std::vector<double>& samples) {
+    const Summary s = summarize(samples);
+    char buf[64];
+    if (samples.size() == 1)
+        std::snprintf(buf, sizeof buf, "%.2f", s.median);
+    else
+        std::snprintf(buf, sizeof buf, "%.2f (%.2f-%.2f)", s.median, s.min, s.max);
+    return buf;
+}
+
+// Rows = passes (the union, in first-seen order), columns = measurements, like
+// the paper's Table II. Cells: median (min-max) GPU ms.
+void printTable(const std::vector<Measurement>& ms, const std::string& title) {
+    std::vector<const Measurement*> cols;
+    for (const Measurement& m : ms)
+        if (m.status != "skipped") cols.push_back(&m);
+    if (cols.empty()) return;
+    std::vector<std::string> rows;
+    for (const Measurement* m : cols)
+        for (const std::string& name : m->passes.order)
+            if (std::find(rows.begin(), rows.end(), name) == rows.end()) rows.push_back(name);
+
+    std::printf("\n%s\n\n| GPU ms: median (min-max) |", title.c_str());
+    for (const Measurement* m : cols) std::printf(" %s %u^3 |", m->scene.c_str(), m->voxels);
+    std::printf("\n|---|");
+    for (size_t i = 0; i < cols.size(); ++i) std::printf("---|");
+    std::printf("\n");
+    auto row = [&](const std::string& label, auto&& value) {
+        std::printf("| %s |", label.c_str());
+        for (const Measurement* m : cols) {
+            if (m->status != "ok") {
+                std::printf(" failed |");
+                continue;
+            }
+            std::printf(" %s |", value(*m).c_str());
+        }
+        std::printf("\n");
+    };
+    for (const std::string& name : rows)
+        row(name, [&](const Measurement& m) {
+            const auto it = m.passes.samples.find(name);
+            return it == m.passes.samples.end() ? std::string("-") : cell(it->second);
+        });
+    row("**frame (GPU)**", [](const Measurement& m) { return cell(m.frameMs); });
+    row("frame (wall)", [](const Measurement& m) { return cell(m.wallMs); });
+    row("frames measured", [](const Measurement& m) { return std::to_string(m.frames); });
+    row("triangles static / dynamic", [](const Measurement& m) {
+        return std::to_string(m.staticTriangles) + " / " + std::to_string(m.dynamicTriangles);
+    });
+    row("GPU memory (MiB)", [](const Measurement& m) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.1f", double(m.memoryBytes) / 1048576.0);
+        return std::string(buf);
+    });
+    for (const Measurement* m : cols)
+        if (m->status == "failed") std::printf("\n%s %u^3 failed: %s\n", m->scene.c_str(), m->voxels, m->error.c_str());
+}
+
+void writeJson(const std::string& path, const nlohmann::json& j) {
+    const fs::path p(path);
+    if (p.has_parent_path()) fs::create_directories(p.parent_path());
+    std::ofstream f(path);
+    if (!f) throw image::IoError(path + ": cannot open for writing");
+    f << j.dump(2) << "\n";
+    if (!f) throw image::IoError(path + ": write failed");
+}
+
+}  // namespace
+
+int runBench(const RenderOptions& options, int argc, const char* const* argv) {
+    RenderOptions o = options;
+    const bool widthGiven = givenOnCommandLine(argc, argv, "--width");
+    const bool heightGiven = givenOnCommandLine(argc, argv, "--height");
+    if (!widthGiven) o.width = 640;
+    if (!heightGiven) o.height = 360;
+    std::vector<uint32_t> resolutions = o.benchVoxels;
+    uint32_t frames = o.benchFrames, warmup = o.benchWarmup;
+    if (o.benchQuick) {
+        resolutions = {32};
+        frames = 2;
+        warmup = 1;
+        o.width = 160;
+        o.height = 90;
+    }
+
+    const fs::path shared(o.sharedDir);
+    const fs::path scenes = shared / "scenes";
+    std::vector<BenchScene> suite;
+    if (!o.scene.empty())
+        suite.push_back({fs::path(o.scene).stem().string(), o.scene});
+    else {
+        suite.push_back({"cornell", (scenes / "cornell-box/cornell-lights.gltf").string()});
+        if (!o.benchQuick) {
+            suite.push_back({"sibenik", (scenes / "sibenik/sibenik-point.gltf").string()});
+            suite.push_back({"sponza", (scenes / "crytek-sponza/sponza-sun.gltf").string()});
+        }
+    }
+    // The moving dynamic object: --add-model, else the Stanford bunny.
+    std::string dynamicModel = o.addModel.empty() ? (scenes / "stanford-bunny/bun_zipper.ply").string() : o.addModel;
+    if (!fs::exists(dynamicModel)) {
+        std::fprintf(stderr, "warning: dynamic object %s not found; benchmarking without one\n", dynamicModel.c_str());
+        dynamicModel.clear();
+    }
+
+    gpu::ContextOptions co;
+    co.validation = o.validate;
+    co.deviceName = o.device;
+    gpu::Context ctx(co);
+
+    nlohmann::json out;
+    out["tool"] = "dvsgi bench";
+    out["date"] = utcNow();
+    out["command_line"] = commandLine(argc, argv);
+    out["device"] = deviceJson(ctx);
+    const char* lpThreads = std::getenv("LP_NUM_THREADS");
+    out["host"] = {{"cpu", hostCpu()},
+                   {"hardware_threads", std::thread::hardware_concurrency()},
+                   {"LP_NUM_THREADS", lpThreads ? lpThreads : ""}};
+    out["settings"] = {{"width", o.width},
+                       {"height", o.height},
+                       {"supersample", o.supersample},
+                       {"shadow_map_size", o.shadowMapSize},
+                       {"camera", o.camera},
+                       {"voxel_resolutions", resolutions},
+                       {"frames", frames},
+                       {"warmup_frames", warmup},
+                       {"time_step", o.timeStep},
+                       {"static_voxelization", "forced every measured frame (markStaticDirty)"},
+                       {"shared", o.sharedDir},
+                       {"dynamic_model", dynamicModel.empty() ? nlohmann::json(nullptr) : nlohmann::json(dynamicModel)},
+                       {"quick", o.benchQuick},
+                       {"validation", o.validate}};
+
+    std::fprintf(stderr, "dvsgi bench: %s, %ux%u, %u warm-up + %u measured frame(s) per measurement\n",
+                 ctx.deviceName.c_str(), o.width, o.height, warmup, frames);
+
+    std::vector<Measurement> results;
+    std::vector<std::string> seenWarnings;
+    const size_t total = suite.size() * resolutions.size();
+    size_t index = 0, ok = 0;
+    uint32_t validationBefore = ctx.validationErrors();
+    for (const BenchScene& bs : suite) {
+        // Load once per scene; a missing or unreadable scene skips all its measurements.
+        std::string skipReason;
+        scene::Scene scene;
+        double loadMs = 0.0;
+        if (!fs::exists(bs.path)) {
+            skipReason = bs.path + ": file not found";
+        } else {
+            RenderOptions so = o;
+            so.scene = bs.path;
+            so.addModel = dynamicModel;
+            try {
+                const auto start = Clock::now();
+                scene = loadForOptions(so);
+                loadMs = msSince(start);
+                for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+            } catch (const std::exception& e) {
+                skipReason = e.what();
+            }
+        }
+        if (!skipReason.empty()) std::fprintf(stderr, "warning: skipping %s: %s\n", bs.name.c_str(), skipReason.c_str());
+
+        uint64_t staticTris = 0, dynamicTris = 0;
+        if (skipReason.empty()) countTriangles(scene, staticTris, dynamicTris);
+
+        for (uint32_t n : resolutions) {
+            ++index;
+            Measurement m;
+            m.scene = bs.name;
+            m.file = bs.path;
+            m.voxels = n;
+            if (!skipReason.empty()) {
+                std::fprintf(stderr, "[%zu/%zu] %s %u^3 skipped\n", index, total, bs.name.c_str(), n);
+                m.status = "skipped";
+                m.error = skipReason;
+                results.push_back(std::move(m));
+                continue;
+            }
+            std::fprintf(stderr, "[%zu/%zu] %s %u^3 ...\n", index, total, bs.name.c_str(), n);
+            std::fflush(stderr);
+            RenderOptions mo = o;
+            mo.voxels = n;
+            m.staticTriangles = staticTris;
+            m.dynamicTriangles = dynamicTris;
+            const auto start = Clock::now();
+            try {
+                measure(ctx, scene, mo, warmup, frames, m, seenWarnings);
+                m.status = "ok";
+                m.detail["scene_load_ms"] = loadMs;
+                ++ok;
+                const auto vs = m.passes.samples.find("voxelize static");
+                std::fprintf(stderr, "[%zu/%zu] %s %u^3 done in %.1f s: voxelize static %.2f ms, frame %.2f ms (GPU medians)\n",
+                             index, total, bs.name.c_str(), n, msSince(start) / 1000.0,
+                             vs == m.passes.samples.end() ? 0.0 : summarize(vs->second).median,
+                             summarize(m.frameMs).median);
+            } catch (const std::exception& e) {
+                m.status = "failed";
+                m.error = e.what();
+                m.passes = {};
+                m.frameMs.clear();
+                m.wallMs.clear();
+                std::fprintf(stderr, "[%zu/%zu] %s %u^3 failed: %s\n", index, total, bs.name.c_str(), n, e.what());
+            }
+            const uint32_t validationNow = ctx.validationErrors();
+            m.detail["validation_errors"] = validationNow - validationBefore;
+            validationBefore = validationNow;
+            results.push_back(std::move(m));
+        }
+    }
+
+    nlohmann::json list = nlohmann::json::array();
+    for (const Measurement& m : results) list.push_back(measurementJson(m));
+    out["measurements"] = list;
+    out["validation_errors"] = ctx.validationErrors();
+    writeJson(o.benchOut, out);
+
+    if (!o.quiet) {
+        printTable(results, "dvsgi bench, " + ctx.deviceName + ", " + std::to_string(o.width) + "x" +
+                                std::to_string(o.height) + ", " + out["date"].get<std::string>());
+        std::printf("\nwrote %s\n", o.benchOut.c_str());
+    }
+    if (ctx.validationErrors() > 0) {
+        std::fprintf(stderr, "dvsgi: %u Vulkan validation error(s)\n", ctx.validationErrors());
+        return 3;
+    }
+    if (ok == 0) {
+        std::fprintf(stderr, "dvsgi: bench: no measurement succeeded\n");
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace dvsgi::app
