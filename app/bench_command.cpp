@@ -185,7 +185,7 @@ double msSince(Clock::time_point start) {
 // voxelization forced so every frame reports "voxelize static". Throws on any
 // failure (e.g. out of device memory); the caller records it.
 void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o, uint32_t warmup,
-             uint32_t frames, Measurement& m, std::vector<std::string>& seenWarnings) {
+             uint32_t frames, double maxSeconds, Measurement& m, std::vector<std::string>& seenWarnings) {
     render::RenderSettings rs = settingsForOptions(o);
     const auto setupStart = Clock::now();
     render::Renderer renderer(ctx, scene, rs);
@@ -204,7 +204,10 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
     }
     const double warmupMs = msSince(warmStart);
 
+    const auto measureStart = Clock::now();
     for (uint32_t i = 0; i < frames; ++i, ++frame) {
+        // --bench-max-seconds: stop early (after at least one frame) on slow devices.
+        if (i > 0 && maxSeconds > 0.0 && msSince(measureStart) > maxSeconds * 1000.0) break;
         renderer.setTime(float(frame) * o.timeStep);
         renderer.markStaticDirty();
         const auto start = Clock::now();
@@ -213,7 +216,8 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
         m.frameMs.push_back(stats.gpuMs);
         for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);
     }
-    m.frames = frames;
+    m.frames = uint32_t(m.frameMs.size());
+    m.detail["frames_requested"] = frames;
 
     nlohmann::json memory = nlohmann::json::object();
     m.memoryBytes = 0;
@@ -386,6 +390,7 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
                        {"voxel_resolutions", resolutions},
                        {"frames", frames},
                        {"warmup_frames", warmup},
+                       {"max_seconds", o.benchMaxSeconds},
                        {"time_step", o.timeStep},
                        {"static_voxelization", "forced every measured frame (markStaticDirty)"},
                        {"shared", o.sharedDir},
@@ -397,6 +402,14 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
                  ctx.deviceName.c_str(), o.width, o.height, warmup, frames);
 
     std::vector<Measurement> results;
+    auto writeResults = [&] {
+        nlohmann::json list = nlohmann::json::array();
+        for (const Measurement& m : results) list.push_back(measurementJson(m));
+        out["measurements"] = list;
+        out["validation_errors"] = ctx.validationErrors();
+        writeJson(o.benchOut, out);
+    };
+    out["complete"] = false;
     std::vector<std::string> seenWarnings;
     const size_t total = suite.size() * resolutions.size();
     size_t index = 0, ok = 0;
@@ -447,7 +460,7 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
             m.dynamicTriangles = dynamicTris;
             const auto start = Clock::now();
             try {
-                measure(ctx, scene, mo, warmup, frames, m, seenWarnings);
+                measure(ctx, scene, mo, warmup, frames, o.benchMaxSeconds, m, seenWarnings);
                 m.status = "ok";
                 m.detail["scene_load_ms"] = loadMs;
                 ++ok;
@@ -468,14 +481,11 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
             m.detail["validation_errors"] = validationNow - validationBefore;
             validationBefore = validationNow;
             results.push_back(std::move(m));
+            writeResults();  // after every measurement, so an interrupted run keeps what it measured
         }
     }
-
-    nlohmann::json list = nlohmann::json::array();
-    for (const Measurement& m : results) list.push_back(measurementJson(m));
-    out["measurements"] = list;
-    out["validation_errors"] = ctx.validationErrors();
-    writeJson(o.benchOut, out);
+    out["complete"] = true;
+    writeResults();
 
     if (!o.quiet) {
         printTable(results, "dvsgi bench, " + ctx.deviceName + ", " + std::to_string(o.width) + "x" +

@@ -212,6 +212,60 @@ const std::vector<OptionSpec>& optionSpecs() {
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.softKappa = parseFloat(opt, v, 0.0f, 100.0f, "a number in 0..100");
          }},
+        {"--cones", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "6" && v != "16") badValue(opt, "6 or 16", v);
+             o.cones = v == "6" ? 6 : 16;
+         }},
+        {"--cone-step", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.coneStep = parseFloat(opt, v, 0.05f, 4.0f, "a step factor beta in 0.05..4");
+         }},
+        {"--cone-min-step", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.coneMinStep = parseFloat(opt, v, 0.05f, 8.0f, "a step in voxels in 0.05..8");
+         }},
+        {"--max-distance", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.maxDistance = parseFloat(opt, v, 0.0f, 1e6f, "metres >= 0 (0 = the grid's diagonal)");
+         }},
+        {"--cone-offset", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.coneOffset = parseFloat(opt, v, 0.0f, 16.0f, "voxels in 0..16");
+         }},
+        {"--ao-lambda", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.aoLambda = parseFloat(opt, v, 0.0f, 1000.0f, "a number in 0..1000");
+         }},
+        {"--ao", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "on" && v != "off") badValue(opt, "on or off", v);
+             o.ao = v == "on";
+         }},
+        {"--specular", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "on" && v != "off") badValue(opt, "on or off", v);
+             o.specular = v == "on";
+         }},
+        {"--shadows", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "map" && v != "cone") badValue(opt, "map or cone", v);
+             o.shadows = v;
+         }},
+        {"--shadow-aperture", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.shadowAperture = parseFloat(opt, v, 0.1f, 90.0f, "degrees in 0.1..90");
+         }},
+        {"--trace-scale", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.traceScale = parseFloat(opt, v, 0.125f, 1.0f, "a scale in 0.125..1");
+         }},
+        {"--output", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "full" && v != "direct" && v != "indirect" && v != "specular" && v != "ao" && v != "shadow")
+                 badValue(opt, "full, direct, indirect, specular, ao or shadow", v);
+             o.output = v;
+         }},
         {"--frames", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.frames = uint32_t(parseUnsigned(opt, v, 1, 100000, "an integer in 1..100000"));
@@ -258,6 +312,10 @@ const std::vector<OptionSpec>& optionSpecs() {
         {"--bench-warmup", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.benchWarmup = uint32_t(parseUnsigned(opt, v, 0, 1000, "an integer in 0..1000"));
+         }},
+        {"--bench-max-seconds", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.benchMaxSeconds = parseFloat(opt, v, 0.0f, 1e6f, "seconds in 0..1000000 (0 = no limit)");
          }},
         {"--bench-quick", false,
          [](RenderOptions& o, std::string_view, std::string_view) { o.benchQuick = true; }},
@@ -415,6 +473,28 @@ std::string usageText() {
            "  --light-occlusion NAME=M  the mode of one light (repeatable)\n"
            "  --soft-kappa K       kappa of soft raycast shadows, t in voxels (default 0.5)\n"
            "\n"
+           "Cone tracing and composition:\n"
+           "  --cones 6|16         diffuse cone set: the paper's six 60-degree cones (default)\n"
+           "                       or sixteen equal-solid-angle cones; cosine-weighted and\n"
+           "                       normalized so a uniform radiance L gives irradiance pi*L\n"
+           "  --cone-step B        step = B * cone diameter (beta, default 0.5)\n"
+           "  --cone-min-step S    smallest step in voxels (default 0.5)\n"
+           "  --max-distance M     longest cone in metres (default 0 = the grid's diagonal)\n"
+           "  --cone-offset V      cone origins move V voxels along the normal (default 1.5)\n"
+           "  --specular on|off    one cone along the reflected view direction for glossy\n"
+           "                       materials, tan(half-angle) = roughness^2 (default on)\n"
+           "  --ao-lambda L        ambient occlusion falloff f(r) = 1/(1 + L r), r in voxels\n"
+           "                       (default 0.1)\n"
+           "  --ao on|off          multiply the indirect terms by the AO (default off: the\n"
+           "                       cones already account for occlusion)\n"
+           "  --shadows map|cone   direct-light visibility from shadow maps (default) or from\n"
+           "                       a cone toward each light (paper Table V)\n"
+           "  --shadow-aperture D  full angle of the shadow cones in degrees (default 5)\n"
+           "  --trace-scale S      trace cones at S x the resolution and upsample with depth\n"
+           "                       and normal weights (0.125..1, default 1)\n"
+           "  --output T           full (default), direct, indirect, specular, ao or shadow:\n"
+           "                       write one term of the composition\n"
+           "\n"
            "Animation and dynamic objects:\n"
            "  --frames K           render K frames of the glTF animations, K*time-step seconds,\n"
            "                       and write the last; a '#' run in --out (e.g. f_###.exr)\n"
@@ -437,6 +517,9 @@ std::string usageText() {
            "  --bench-frames K     measured frames per scene and resolution (default 10); each\n"
            "                       re-runs static voxelization. Median, min and max per pass\n"
            "  --bench-warmup W     frames rendered before measuring, not recorded (default 2)\n"
+           "  --bench-max-seconds S  stop measuring a scene/resolution once it has run S seconds\n"
+           "                       (at least one frame; the JSON records the frames measured)\n"
+           "                       (default 0 = always K frames)\n"
            "  --bench-quick        Cornell box only, 32^3, 2 frames, 160x90 (a smoke test)\n"
            "\n"
            "Exit status: 0 on success, 2 for a bad command line, another non-zero value\n"

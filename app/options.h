@@ -45,6 +45,21 @@ struct RenderOptions {
     std::vector<std::pair<std::string, std::string>> lightOcclusion;  // NAME=mode
     float softKappa = 0.5f;
 
+    // Cone tracing and composition (issue #5).
+    uint32_t cones = 6;              // 6 (paper) or 16
+    float coneStep = 0.5f;           // beta
+    float coneMinStep = 0.5f;        // voxels
+    float maxDistance = 0.0f;        // metres, 0 = grid diagonal
+    float coneOffset = 1.5f;         // origin offset along the normal, voxels
+    float aoLambda = 0.1f;           // f(r) = 1/(1 + lambda r), r in voxels
+    bool ao = false;                 // multiply indirect terms by AO in the composite
+    bool specular = true;
+    float minSpecularAngle = 1.0f;   // degrees, half-angle
+    std::string shadows = "map";     // map | cone
+    float shadowAperture = 5.0f;     // degrees, full angle of the shadow cone
+    float traceScale = 1.0f;
+    std::string output = "full";     // full|direct|indirect|specular|ao|shadow
+
     // Animation and dynamic objects.
     uint32_t frames = 1;          // render frames 0..K-1, write the last (or each: '#' in --out)
     float timeStep = 1.0f / 30.0f;  // seconds between frames
@@ -58,6 +73,7 @@ struct RenderOptions {
     std::vector<uint32_t> benchVoxels = {128, 256};
     uint32_t benchFrames = 10;    // measured frames per (scene, voxel resolution)
     uint32_t benchWarmup = 2;     // frames rendered and discarded before those
+    float benchMaxSeconds = 0.0f; // stop measuring a (scene, resolution) after this long; 0 = never
     bool benchQuick = false;      // Cornell box only, 32^3, 2 frames, 160x90
 };
 

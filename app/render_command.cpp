@@ -129,6 +129,26 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
                        {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
                        {"voxel_size", v->grid.voxelSize}};
     }
+    j["parameters"] = {{"voxels", o.voxels},
+                       {"conservative", o.hardwareConservative ? "auto" : "gs"},
+                       {"bounces", o.bounces},
+                       {"normal_weighted", o.normalWeighted},
+                       {"voxel_occlusion", o.voxelOcclusion},
+                       {"soft_kappa", o.softKappa},
+                       {"cones", o.cones},
+                       {"cone_aperture_degrees", o.cones == 6 ? 60.0 : 40.8},
+                       {"cone_step_beta", o.coneStep},
+                       {"cone_min_step_voxels", o.coneMinStep},
+                       {"max_distance_m", o.maxDistance},
+                       {"cone_offset_voxels", o.coneOffset},
+                       {"ao_lambda", o.aoLambda},
+                       {"ao", o.ao},
+                       {"specular", o.specular},
+                       {"shadows", o.shadows},
+                       {"shadow_aperture_degrees", o.shadowAperture},
+                       {"trace_scale", o.traceScale},
+                       {"output", o.output}};
+    for (const auto& [name, mode] : o.lightOcclusion) j["parameters"]["light_occlusion"][name] = mode;
     j["validation_errors"] = ctx.validationErrors();
     return j;
 }
@@ -171,6 +191,23 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.voxelLight.softKappa = o.softKappa;
     rs.voxelLight.occlusion = occlusionMode(o.voxelOcclusion);
     for (const auto& [name, mode] : o.lightOcclusion) rs.lightOcclusion.emplace_back(name, occlusionMode(mode));
+    rs.gather.coneSet = o.cones;
+    rs.gather.stepFactor = o.coneStep;
+    rs.gather.minStepVoxels = o.coneMinStep;
+    rs.gather.maxDistance = o.maxDistance;
+    rs.gather.normalOffsetVoxels = o.coneOffset;
+    rs.gather.aoLambda = o.aoLambda;
+    rs.gather.specular = o.specular;
+    rs.gather.minSpecularDegrees = o.minSpecularAngle;
+    rs.gather.traceScale = o.traceScale;
+    rs.shadowCones.enabled = o.shadows == "cone";
+    rs.shadowCones.apertureDegrees = o.shadowAperture;
+    rs.shadowCones.normalOffsetVoxels = o.coneOffset;
+    rs.shadowCones.cone.trace = glm::vec4(o.coneStep, o.coneMinStep, 0.0f, 1.0f);
+    rs.applyAO = o.ao;
+    static const char* terms[] = {"full", "direct", "indirect", "specular", "ao", "shadow"};
+    for (uint32_t i = 0; i < 6; ++i)
+        if (o.output == terms[i]) rs.outputTerm = i;
     return rs;
 }
 

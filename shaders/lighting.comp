@@ -2,9 +2,13 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
 #include "shared/bindings.h"
+#include "shared/gather_data.h"
 
 // Deferred direct lighting: for every pixel, the sum over lights of
-// BRDF * cos * irradiance * shadow visibility, plus emitted radiance.
+// BRDF * cos * irradiance * shadow visibility, plus emitted radiance. The
+// visibility comes from the shadow maps or, with shadow cones (paper Table V),
+// from a cone traced through the voxel volumes toward the light.
+#define CONE_USE_RADIANCE_VOLUME
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = BIND_LIGHT_FRAME) uniform Frame { FrameConstants frame; };
@@ -16,10 +20,28 @@ layout(set = 0, binding = BIND_LIGHT_LIGHTS, std430) readonly buffer Lights { Gp
 layout(set = 0, binding = BIND_LIGHT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
 layout(set = 0, binding = BIND_LIGHT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
 layout(set = 0, binding = BIND_LIGHT_OUT_DIRECT, rgba32f) uniform writeonly image2D outDirect;
+layout(set = 0, binding = BIND_LIGHT_VOXEL_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_LIGHT_VOXEL_RADIANCE) uniform sampler3D radianceVolume;
+layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directional[6];
+layout(set = 0, binding = BIND_LIGHT_OUT_SHADOW, r16f) uniform writeonly image2D outShadow;
+
+struct LightingPush {
+    ConeParams cone;  // shadow cones: step factor, min step, (max distance unused), first sample
+    vec4 shadow;      // x 1 = shadow cones instead of maps, y tan(half aperture), z normal offset (voxels)
+};
+layout(push_constant) uniform Push { LightingPush pc; };
 
 #include "lib/lights.glsl"
 #include "lib/brdf.glsl"
 #include "lib/shadow_map.glsl"
+#include "lib/cone_trace.glsl"
+
+float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
+    ConeParams p = pc.cone;
+    p.trace.z = min(dist, 2.0 * grid.originSize.w * float(grid.dims.x));
+    vec3 origin = P + N * (pc.shadow.z * grid.originSize.w);
+    return 1.0 - traceCone(origin, L, pc.shadow.y, p).a;
+}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -27,6 +49,7 @@ void main() {
     vec4 emission = texelFetch(gEmission, px, 0);
     if (emission.a == 0.0) {  // background: no environment light
         imageStore(outDirect, px, vec4(0.0));
+        imageStore(outShadow, px, vec4(1.0));
         return;
     }
     float depth = texelFetch(gDepth, px, 0).r;
@@ -39,13 +62,21 @@ void main() {
     vec3 V = normalize(frame.cameraPos.xyz - P);
 
     vec3 radiance = emission.rgb;
+    float visSum = 0.0, visCount = 0.0;
     for (uint i = 0u; i < frame.sizes.z; ++i) {
         vec3 L;
         float dist;
         vec3 E = lightIrradiance(lights[i], P, L, dist);
         if (dot(N, L) <= 0.0 || all(equal(E, vec3(0.0)))) continue;
-        float vis = frame.shadowParams.y > 0.5 ? shadowVisibility(lights[i], P, N, frame.shadowParams.x) : 1.0;
+        float vis = 1.0;
+        if (pc.shadow.x > 0.5)
+            vis = coneVisibility(P, N, L, dist);
+        else if (frame.shadowParams.y > 0.5)
+            vis = shadowVisibility(lights[i], P, N, frame.shadowParams.x);
         radiance += surfaceBrdfCos(base.rgb, base.a, nr.w, N, L, V) * E * vis;
+        visSum += vis;
+        visCount += 1.0;
     }
     imageStore(outDirect, px, vec4(radiance, 1.0));
+    imageStore(outShadow, px, vec4(visCount > 0.0 ? visSum / visCount : 1.0));
 }

@@ -20,8 +20,7 @@ layout(location = 1) in vec2 inUV;
 layout(location = 2) flat in uint inMaterial;
 layout(location = 3) flat in uint inAxis;
 layout(location = 4) flat in vec4 inAabb;
-layout(location = 5) flat in vec3 inPlane;
-layout(location = 6) flat in vec2 inDepthRange;
+layout(location = 5) flat in vec3 inTri[3];
 
 ivec3 unswizzle(ivec3 p, uint axis) {
     return axis == 0u ? p.zxy : (axis == 1u ? p.yzx : p.xyz);
@@ -29,6 +28,39 @@ ivec3 unswizzle(ivec3 p, uint axis) {
 
 void add(ivec3 voxel, uint channel, float value) {
     if (value != 0.0) imageAtomicAdd(accum, voxel + ivec3(0, 0, int(channel * grid.dims.x)), value);
+}
+
+// Float slack (pixels) for the clip: a triangle that only touches the
+// column's border must not be clipped away by rounding.
+const float CLIP_SLACK = 1e-3;
+
+// Depth range (voxel units) of the part of the triangle inside the pixel
+// column [column, column + 1]^2, by Sutherland-Hodgman clipping; false when
+// nothing is left (a pixel the dilation reached without the triangle touching
+// the column). The part is convex, so the voxel layers it reaches are exactly
+// those its depth range meets.
+bool columnDepthRange(vec2 column, out vec2 range) {
+    vec3 poly[7], clipped[7];
+    int count = 3;
+    for (int i = 0; i < 3; ++i) poly[i] = inTri[i];
+    for (int side = 0; side < 4; ++side) {
+        int a = side & 1;                  // clipped coordinate: x or y
+        float s = side < 2 ? -1.0 : 1.0;   // keep s * p[a] <= bound
+        float bound = side < 2 ? -(column[a] - CLIP_SLACK) : column[a] + 1.0 + CLIP_SLACK;
+        int m = 0;
+        for (int i = 0; i < count; ++i) {
+            vec3 p = poly[i], q = poly[(i + 1) % count];
+            float dp = s * p[a] - bound, dq = s * q[a] - bound;
+            if (dp <= 0.0) clipped[m++] = p;
+            if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) clipped[m++] = mix(p, q, dp / (dp - dq));
+        }
+        count = m;
+        if (count == 0) return false;
+        for (int i = 0; i < count; ++i) poly[i] = clipped[i];
+    }
+    range = vec2(poly[0].z);
+    for (int i = 1; i < count; ++i) range = vec2(min(range.x, poly[i].z), max(range.y, poly[i].z));
+    return true;
 }
 
 void main() {
@@ -42,15 +74,14 @@ void main() {
     if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, inUV).rgb;
     vec3 n = normalize(inNormal);
 
-    // Every voxel layer the triangle's plane crosses inside this pixel column,
-    // limited to the triangle's own depth range; closed intervals, so a
-    // triangle lying exactly on a voxel face marks the voxels on both sides.
-    float zc = dot(inPlane.xy, pc2) + inPlane.z;
-    float halfSpan = 0.5 * (abs(inPlane.x) + abs(inPlane.y));
-    float zlo = max(zc - halfSpan, inDepthRange.x), zhi = min(zc + halfSpan, inDepthRange.y);
-    int N = int(grid.dims.x);
-    int first = max(int(floor(zlo - 1e-4)), 0), last = min(int(floor(zhi + 1e-4)), N - 1);
+    // Every voxel layer that the triangle's part inside this pixel column
+    // reaches; closed intervals, so a triangle lying exactly on a voxel face
+    // marks the voxels on both sides.
     ivec2 column = ivec2(pc2);
+    vec2 depth;
+    if (!columnDepthRange(vec2(column), depth)) discard;
+    int N = int(grid.dims.x);
+    int first = max(int(floor(depth.x - 1e-4)), 0), last = min(int(floor(depth.y + 1e-4)), N - 1);
     for (int layer = first; layer <= last; ++layer) {
         ivec3 voxel = unswizzle(ivec3(column, layer), inAxis);
         if (pc.mode.x == VOXELIZE_DYNAMIC) {

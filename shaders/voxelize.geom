@@ -23,12 +23,15 @@ layout(location = 1) out vec2 outUV;
 layout(location = 2) flat out uint outMaterial;
 layout(location = 3) flat out uint outAxis;
 layout(location = 4) flat out vec4 outAabb;    // xy min, zw max (pixels), already grown by half a pixel
-layout(location = 5) flat out vec3 outPlane;   // depth = x * u + y * v + z, in voxel units
-layout(location = 6) flat out vec2 outDepthRange;
+layout(location = 5) flat out vec3 outTri[3];  // the projected triangle: xy pixels, z depth (voxel units)
 
-// Slightly more than half a pixel so triangles that only touch a pixel's
-// border still reach it (closed-box overlap, as the CPU reference defines it).
-const float GROW = 0.5 + 1e-4;
+// Half a pixel plus a margin (VoxelizePush.mode.z, float bits) of two steps
+// of the rasterizer's sub-pixel grid. Vertices are snapped to that grid, so a
+// triangle that only touches a pixel's border, or passes within a snap step of
+// it, must still be dilated past the pixel centre after snapping, where the
+// top-left rule would otherwise drop the tie (closed-box overlap, as the CPU
+// reference defines it, needs those pixels).
+float grow() { return 0.5 + uintBitsToFloat(pc.mode.z); }
 
 vec3 swizzle(vec3 p, uint axis) {
     return axis == 0u ? p.yzx : (axis == 1u ? p.zxy : p.xyz);
@@ -47,14 +50,11 @@ void main() {
 
     vec3 q[3];
     for (int i = 0; i < 3; ++i) q[i] = swizzle(inVoxel[i], axis);
-    vec3 n = cross(q[1] - q[0], q[2] - q[0]);  // n.z != 0: z is the dominant axis now
-    vec3 plane = vec3(-n.x / n.z, -n.y / n.z, 0.0);
-    plane.z = q[0].z - plane.x * q[0].x - plane.y * q[0].y;
 
     vec2 lo = min(q[0].xy, min(q[1].xy, q[2].xy)), hi = max(q[0].xy, max(q[1].xy, q[2].xy));
+    const float GROW = grow();
     outAabb = vec4(lo - GROW, hi + GROW);
-    outDepthRange = vec2(min(q[0].z, min(q[1].z, q[2].z)), max(q[0].z, max(q[1].z, q[2].z)));
-    outPlane = plane;
+    outTri = q;
     outAxis = axis;
     outMaterial = inMaterial[0];
 

@@ -21,11 +21,14 @@ vec4 sampleDirectional(vec3 uvw, vec3 dir, float level) {
 // W m^-2 sr^-1 as seen from the origin) and accumulated opacity (a).
 // params.trace: x step factor beta (step = beta * diameter), y minimum step in
 // voxels, z maximum distance in metres, w distance of the first sample in voxels.
-vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, ConeParams params) {
+// `ao` receives the occlusion weighted by f(r) = 1 / (1 + aoLambda * r), r the
+// distance in voxels: occ += (1 - occ) * alpha * f(r) (ambient occlusion).
+vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float aoLambda, out float ao) {
     float s = grid.originSize.w;
     float extent = s * float(grid.dims.x);
     float maxLevel = float(grid.dims.z) - 1.0;
     vec4 acc = vec4(0.0);
+    ao = 0.0;
     float t = params.trace.w * s;
     for (int i = 0; i < 1024 && t < params.trace.z && acc.a < 0.995; ++i) {
         float d = max(2.0 * t * tanHalf, s);  // diameter = 2 t tan(theta/2), at least a voxel
@@ -45,9 +48,15 @@ vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, ConeParams params) {
         vec3 c = a > 1e-6 ? smp.rgb * (ac / a) : vec3(0.0);
         acc.rgb += (1.0 - acc.a) * c;
         acc.a += (1.0 - acc.a) * ac;
+        ao += (1.0 - ao) * ac / (1.0 + aoLambda * t / s);
         t += stepLen;
     }
     return acc;
+}
+
+vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, ConeParams params) {
+    float ao;
+    return traceConeAO(origin, dir, tanHalf, params, 0.0, ao);
 }
 
 // Cone sets over the hemisphere around n, cosine-weighted and normalized so a

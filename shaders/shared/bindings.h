@@ -26,10 +26,26 @@ DVSGI_CONST(uint, BIND_LIGHT_LIGHTS, 5);
 DVSGI_CONST(uint, BIND_LIGHT_SHADOW_VIEWS, 6);
 DVSGI_CONST(uint, BIND_LIGHT_SHADOW_MAP, 7);
 DVSGI_CONST(uint, BIND_LIGHT_OUT_DIRECT, 8);
+DVSGI_CONST(uint, BIND_LIGHT_VOXEL_GRID, 9);         // shadow cones trace the voxel volumes
+DVSGI_CONST(uint, BIND_LIGHT_VOXEL_RADIANCE, 10);
+DVSGI_CONST(uint, BIND_LIGHT_VOXEL_DIRECTIONAL, 11);  // array of 6
+DVSGI_CONST(uint, BIND_LIGHT_OUT_SHADOW, 12);         // mean light visibility
 
 // Composition and resolve to the output size.
 DVSGI_CONST(uint, BIND_COMP_DIRECT, 0);
 DVSGI_CONST(uint, BIND_COMP_OUT, 1);
+DVSGI_CONST(uint, BIND_COMP_DIFFUSE, 2);   // indirect diffuse + AO (internal size)
+DVSGI_CONST(uint, BIND_COMP_SPECULAR, 3);
+DVSGI_CONST(uint, BIND_COMP_SHADOW, 4);
+
+// Depth-aware upsampling of the traced terms.
+DVSGI_CONST(uint, BIND_UP_FRAME, 0);
+DVSGI_CONST(uint, BIND_UP_NORMAL, 1);
+DVSGI_CONST(uint, BIND_UP_DEPTH, 2);
+DVSGI_CONST(uint, BIND_UP_LOW_DIFFUSE, 3);
+DVSGI_CONST(uint, BIND_UP_LOW_SPECULAR, 4);
+DVSGI_CONST(uint, BIND_UP_OUT_DIFFUSE, 5);
+DVSGI_CONST(uint, BIND_UP_OUT_SPECULAR, 6);
 
 DVSGI_END
 

@@ -12,9 +12,15 @@ struct DrawPush {
 DVSGI_CHECK_SIZE(DrawPush, 16);
 
 struct CompositePush {
-    uvec4 sizes;  // x output width, y output height, z supersample factor
+    uvec4 sizes;  // x output width, y output height, z supersample factor, w output term (TERM_*)
+    uvec4 flags;  // x 1 = multiply the indirect terms by AO, y 1 = indirect terms present
 };
-DVSGI_CHECK_SIZE(CompositePush, 16);
+DVSGI_CHECK_SIZE(CompositePush, 32);
+
+struct UpsamplePush {
+    uvec4 sizes;  // x low width, y low height, z full width, w full height
+};
+DVSGI_CHECK_SIZE(UpsamplePush, 16);
 
 DVSGI_END
 

@@ -14,8 +14,10 @@ namespace dvsgi::render {
 class CompositePass {
 public:
     CompositePass(const gpu::Context& ctx, uint32_t width, uint32_t height, uint32_t supersample);
-    // `direct` must be in use::ComputeWrite; leaves `output` in use::ComputeWrite.
-    void record(VkCommandBuffer cmd, const gpu::Image& direct, gpu::GpuTimers* timers) const;
+    // Inputs in use::ComputeWrite (internal size). `indirect` false: no cone
+    // tracing ran and `diffuse`/`specular` are not read. Leaves `output` in use::ComputeWrite.
+    void record(VkCommandBuffer cmd, const gpu::Image& direct, const gpu::Image& shadow, const gpu::Image& diffuse,
+                const gpu::Image& specular, bool indirect, uint32_t term, bool applyAO, gpu::GpuTimers* timers) const;
     gpu::Image output;  // RGBA32F at output size
 
 private:

@@ -4,9 +4,13 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "shared/voxel_data.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
+}
+namespace dvsgi::vxgi {
+class VoxelVolumes;
 }
 
 namespace dvsgi::render {
@@ -14,13 +18,24 @@ namespace dvsgi::render {
 class GBufferPass;
 class ShadowPass;
 
+// Shadow cones (paper Table V): a cone toward each light through the voxel
+// volumes instead of the shadow maps.
+struct ShadowConeSettings {
+    bool enabled = false;
+    float apertureDegrees = 5.0f;  // full cone angle
+    float normalOffsetVoxels = 1.5f;
+    shader::ConeParams cone{glm::vec4(0.5f, 0.5f, 0.0f, 1.0f)};
+};
+
 class LightingPass {
 public:
     LightingPass(const gpu::Context& ctx, uint32_t width, uint32_t height);
-    // Leaves `direct` in use::ComputeWrite.
+    // Leaves `direct` and `shadow` in use::ComputeWrite.
     void record(VkCommandBuffer cmd, const GBufferPass& gbuffer, const ShadowPass& shadows, const gpu::Buffer& frame,
-                const gpu::Buffer& lights, const gpu::Buffer& views, gpu::GpuTimers* timers) const;
+                const gpu::Buffer& lights, const gpu::Buffer& views, const vxgi::VoxelVolumes& volumes,
+                VkSampler volumeSampler, const ShadowConeSettings& cones, gpu::GpuTimers* timers) const;
     gpu::Image direct;
+    gpu::Image shadow;  // R16F: mean visibility of the lights facing each pixel
 
 private:
     const gpu::Context& ctx_;

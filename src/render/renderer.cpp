@@ -67,7 +67,17 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     lighting_ = std::make_unique<LightingPass>(ctx, iw, ih);
     composite_ = std::make_unique<CompositePass>(ctx, settings.width, settings.height, settings.supersample);
     timers_ = std::make_unique<gpu::GpuTimers>(ctx);
-    if (settings.voxels > 0) {
+    gather_ = std::make_unique<GatherPass>(ctx, iw, ih, settings.gather.traceScale);
+    gpu::SamplerDesc vs;
+    vs.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    vs.transparentBorder = true;
+    volumeSampler_ = gpu::Sampler(ctx, vs);
+    if (settings.voxels == 0) {
+        // The lighting pass always binds voxel volumes; without voxels it gets
+        // small empty ones that nothing writes.
+        if (settings.shadowCones.enabled) throw std::runtime_error("--shadows cone needs voxels (--voxels > 0)");
+        volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, vxgi::fitGrid(sceneGpu_->bounds, 8));
+    } else {
         const vxgi::GridSpec grid =
             settings.hasVoxelBox ? vxgi::gridForBox(settings.voxelBoxMin, settings.voxelBoxMax, settings.voxels)
                                  : vxgi::fitGrid(sceneGpu_->bounds, settings.voxels);
@@ -77,9 +87,9 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         inject_ = std::make_unique<vxgi::InjectPass>(ctx, grid.n);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
-    } else if (settings.view.mode != ViewMode::Final) {
-        throw std::runtime_error("--view: the voxel views need voxels (--voxels 0 turns them off)");
     }
+    if (settings.voxels == 0 && settings.view.mode != ViewMode::Final)
+        throw std::runtime_error("--view: the voxel views need voxels (--voxels 0 turns them off)");
     updateFrameConstants();
 }
 
@@ -157,7 +167,7 @@ FrameStats Renderer::renderFrame() {
     gpu::GpuTimers* t = timers_.get();
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         gpu::GpuTimerScope total(t, cmd, "frame");
-        if (volumes_) {
+        if (voxelizer_) {
             if (staticDirty_) {
                 voxelizer_->clearAll(cmd, *volumes_, t);
                 voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
@@ -166,14 +176,23 @@ FrameStats Renderer::renderFrame() {
             voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
         }
         shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
-        if (volumes_) recordVoxelLight(cmd);
+        if (voxelizer_) recordVoxelLight(cmd);
         if (settings_.view.mode != ViewMode::Final) {
             voxelView_->record(cmd, *volumes_, *frame_, composite_->output, settings_.view, t);
             return;
         }
         gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
-        lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, t);
-        composite_->record(cmd, lighting_->direct, t);
+        lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, *volumes_, volumeSampler_.handle(),
+                          settings_.shadowCones, t);
+        const bool traced = voxelizer_ != nullptr;
+        if (traced) {
+            gather_->record(cmd, *gbuffer_, *volumes_, volumeSampler_.handle(), *frame_, settings_.gather, t);
+        } else {
+            gpu::transition(cmd, gather_->diffuse, gpu::use::Undefined, gpu::use::ComputeWrite);
+            gpu::transition(cmd, gather_->specular, gpu::use::Undefined, gpu::use::ComputeWrite);
+        }
+        composite_->record(cmd, lighting_->direct, lighting_->shadow, gather_->diffuse, gather_->specular, traced,
+                           settings_.outputTerm, settings_.applyAO, t);
     });
     staticDirty_ = false;
     FrameStats stats;
@@ -204,10 +223,11 @@ std::vector<MemoryItem> Renderer::memory() const {
         {"textures", textures},
         {"shadow maps", shadows_->memoryBytes()},
         {"g-buffer", gbuffer_->memoryBytes()},
-        {"direct radiance", lighting_->direct.memorySize()},
+        {"direct radiance", lighting_->direct.memorySize() + lighting_->shadow.memorySize()},
+        {"cone-traced terms", gather_->diffuse.memorySize() + gather_->specular.memorySize()},
         {"output", composite_->output.memorySize()},
     };
-    if (volumes_) {
+    if (voxelizer_) {
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});
         items.push_back({"voxel static flags", volumes_->flags.memorySize()});
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});

@@ -10,6 +10,8 @@
 
 #include "gpu/timers.h"
 #include "image/image_io.h"
+#include "render/gather.h"
+#include "render/lighting.h"
 #include "render/voxel_view.h"
 #include "scene/scene.h"
 #include "vxgi/volumes.h"
@@ -39,6 +41,10 @@ struct RenderSettings {
     // Per-light occlusion mode for the voxel light pass, by light name
     // (lights not listed use shadow maps).
     std::vector<std::pair<std::string, vxgi::Occlusion>> lightOcclusion;
+    GatherSettings gather;           // per-pixel cone tracing (needs voxels)
+    ShadowConeSettings shadowCones;  // cones instead of shadow maps for direct light
+    uint32_t outputTerm = 0;         // shader::TERM_* (full, direct, indirect, specular, ao, shadow)
+    bool applyAO = false;            // multiply the indirect terms by the cone AO
 };
 
 struct FrameStats {
@@ -57,6 +63,7 @@ class GBufferPass;
 class LightingPass;
 class CompositePass;
 class VoxelViewPass;
+class GatherPass;
 }  // namespace dvsgi::render
 namespace dvsgi::vxgi {
 class Voxelizer;
@@ -83,7 +90,7 @@ public:
     void setTime(float seconds);
     void markStaticDirty() { staticDirty_ = true; }  // e.g. to time static voxelization
 
-    const vxgi::VoxelVolumes* volumes() const { return volumes_.get(); }
+    const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
     const vxgi::Voxelizer* voxelizer() const { return voxelizer_.get(); }
     const vxgi::InjectPass* injectPass() const { return inject_.get(); }
     const vxgi::BouncePass* bouncePass() const { return bounce_.get(); }
@@ -116,6 +123,8 @@ private:
     std::unique_ptr<vxgi::InjectPass> inject_;
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
+    std::unique_ptr<GatherPass> gather_;
+    gpu::Sampler volumeSampler_;  // trilinear + mips, transparent black outside the grid
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     std::unique_ptr<gpu::GpuTimers> timers_;

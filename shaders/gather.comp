@@ -1,0 +1,72 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared/scene_data.h"
+#include "shared/gather_data.h"
+
+// Deferred voxel cone tracing per pixel (paper section VIII-X): indirect
+// diffuse from a cone set over the normal hemisphere, specular from one cone
+// along the reflected view direction, and ambient occlusion from the diffuse
+// cones. Runs at the trace resolution (--trace-scale); the G-buffer is read at
+// the pixel each trace pixel stands for.
+#define CONE_USE_RADIANCE_VOLUME
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceVolume;
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional[6];
+layout(set = 0, binding = BIND_GATHER_FRAME) uniform Frame { FrameConstants frame; };
+layout(set = 0, binding = BIND_GATHER_BASE) uniform sampler2D gBase;
+layout(set = 0, binding = BIND_GATHER_NORMAL) uniform sampler2D gNormal;
+layout(set = 0, binding = BIND_GATHER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = BIND_GATHER_OUT_DIFFUSE, rgba16f) uniform writeonly image2D outDiffuse;
+layout(set = 0, binding = BIND_GATHER_OUT_SPECULAR, rgba16f) uniform writeonly image2D outSpecular;
+layout(push_constant) uniform Push { GatherPush pc; };
+
+#include "lib/brdf.glsl"
+#include "lib/cone_trace.glsl"
+#include "lib/cone_sets.glsl"
+
+// Roughness -> specular cone half-angle: tan(half-angle) = roughness^2 (the
+// GGX alpha), clamped below by the minimum aperture.
+float specularTanHalf(float roughness) {
+    return max(roughness * roughness, pc.params.w);
+}
+
+void main() {
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(uvec2(px), pc.flags.zw))) return;
+    // The G-buffer pixel this trace pixel stands for (the upsampler uses the same mapping).
+    ivec2 g = min(ivec2((vec2(px) + 0.5) * vec2(frame.sizes.xy) / vec2(pc.flags.zw)), ivec2(frame.sizes.xy) - 1);
+    float depth = texelFetch(gDepth, g, 0).r;
+    if (depth >= 1.0) {
+        imageStore(outDiffuse, px, vec4(0.0, 0.0, 0.0, 1.0));
+        imageStore(outSpecular, px, vec4(0.0));
+        return;
+    }
+    vec2 ndc = (vec2(g) + 0.5) / vec2(frame.sizes.xy) * 2.0 - 1.0;
+    vec4 w = frame.invViewProj * vec4(ndc, depth, 1.0);
+    vec3 P = w.xyz / w.w;
+    vec4 base = texelFetch(gBase, g, 0);
+    vec4 nr = texelFetch(gNormal, g, 0);
+    vec3 N = normalize(nr.xyz);
+    vec3 V = normalize(frame.cameraPos.xyz - P);
+    float metallic = base.a, roughness = nr.w;
+    // Offset along the normal so the surface does not sample its own voxels.
+    vec3 origin = P + N * (pc.params.z * grid.originSize.w);
+
+    float occlusion;
+    vec3 E = pc.flags.x == CONE_SET_16 ? gatherIrradiance16(origin, N, pc.cone, pc.params.y, occlusion)
+                                       : gatherIrradiance6AO(origin, N, pc.cone, pc.params.y, occlusion);
+    vec3 diffuse = base.rgb / PI * E * (1.0 - metallic);
+    imageStore(outDiffuse, px, vec4(diffuse, 1.0 - occlusion));
+
+    vec3 specular = vec3(0.0);
+    if (pc.flags.y != 0u && isGlossy(metallic, roughness)) {
+        vec3 R = reflect(-V, N);
+        vec4 c = traceCone(origin, R, specularTanHalf(roughness), pc.cone);
+        vec3 F0 = mix(vec3(0.04), base.rgb, metallic);
+        float NoV = max(dot(N, V), 0.0);
+        specular = (F0 + (1.0 - F0) * pow(1.0 - NoV, 5.0)) * c.rgb;
+    }
+    imageStore(outSpecular, px, vec4(specular, 1.0));
+}
