@@ -78,7 +78,7 @@ public:
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
-    gpu::Sampler sampler_;  // trilinear + mips, transparent black outside the grid
+    gpu::Sampler sampler_;  // trilinear + mips, clamped to the grid's edge
 };
 
 }  // namespace dvsgi::vxgi

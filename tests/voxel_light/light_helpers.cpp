@@ -1,0 +1,80 @@
+#include "light_helpers.h"
+
+#include <cstring>
+
+#include <glm/gtc/packing.hpp>
+#include <glm/gtx/quaternion.hpp>
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/transfer.h"
+#include "gpu_fixture.h"
+
+namespace dvsgi::test {
+
+float toHalf(float v) { return glm::unpackHalf1x16(glm::packHalf1x16(v)); }
+
+glm::vec4 toHalf(glm::vec4 v) { return {toHalf(v.x), toHalf(v.y), toHalf(v.z), toHalf(v.w)}; }
+
+Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip) {
+    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), image, gpu::use::ComputeReadWrite, mip);
+    Rgba16Volume v;
+    v.n = std::max(image.desc().extent.width >> mip, 1u);
+    v.texels.resize(size_t(v.n) * v.n * v.n);
+    EXPECT_EQ(bytes.size(), v.texels.size() * 8);
+    for (size_t i = 0; i < v.texels.size(); ++i) {
+        uint16_t h[4];
+        std::memcpy(h, bytes.data() + i * 8, 8);
+        for (int c = 0; c < 4; ++c) v.texels[i][c] = glm::unpackHalf1x16(h[c]);
+    }
+    return v;
+}
+
+void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume) {
+    std::vector<uint16_t> halves(volume.texels.size() * 4);
+    for (size_t i = 0; i < volume.texels.size(); ++i)
+        for (int c = 0; c < 4; ++c) halves[i * 4 + size_t(c)] = glm::packHalf1x16(volume.texels[i][c]);
+    gpu::uploadImage(context(), image, halves.data(), halves.size() * sizeof(uint16_t), gpu::use::ComputeReadWrite);
+}
+
+void uploadAccum(const vxgi::VoxelVolumes& volumes, const AccumVolume& accum) {
+    gpu::uploadImage(context(), volumes.accum, accum.data.data(), accum.data.size() * sizeof(float),
+                     gpu::use::ComputeReadWrite);
+}
+
+AccumVolume readAccum(const vxgi::VoxelVolumes& volumes) {
+    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), volumes.accum, gpu::use::ComputeReadWrite);
+    AccumVolume a(volumes.grid.n);
+    EXPECT_EQ(bytes.size(), a.data.size() * sizeof(float));
+    std::memcpy(a.data.data(), bytes.data(), a.data.size() * sizeof(float));
+    return a;
+}
+
+UnusedShadowMap::UnusedShadowMap() {
+    gpu::ImageDesc d;
+    d.format = VK_FORMAT_D32_SFLOAT;
+    d.extent = {4, 4, 1};
+    d.layers = 2;  // the shader declares a sampler2DArrayShadow, so the view must be an array
+    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    d.name = "unused shadow map";
+    map = gpu::Image(context(), d);
+    gpu::SamplerDesc sd;
+    sd.compare = true;
+    sd.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler = gpu::Sampler(context(), sd);
+    context().submitAndWait(
+        [&](VkCommandBuffer cmd) { gpu::transition(cmd, map, gpu::use::Undefined, gpu::use::ShaderRead); });
+}
+
+void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h) {
+    const glm::vec3 up(0, 1, 0);
+    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const glm::vec3& n : normals) {
+        // A face with inward normal n sits on the side -n of the centre.
+        const glm::quat r = n.y < -0.5f ? glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)) : glm::rotation(up, n);
+        addQuad(s, material, center - n * h, h, r);
+    }
+}
+
+}  // namespace dvsgi::test

@@ -1,0 +1,65 @@
+// Shared pieces of the voxel light tests: fp16 rounding, volume upload and
+// read-back, a stand-in shadow map, and programmatic scenes.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/resources.h"
+#include "scene/scene.h"
+#include "shared/voxel_data.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::test {
+
+// What a value becomes once stored in an RGBA16F texel (round to nearest even).
+float toHalf(float v);
+glm::vec4 toHalf(glm::vec4 v);
+
+inline size_t voxelIndex(uint32_t n, int x, int y, int z) {
+    return (size_t(z) * n + size_t(y)) * n + size_t(x);
+}
+
+// An RGBA16F 3D volume on the host, x fastest.
+struct Rgba16Volume {
+    uint32_t n = 0;
+    std::vector<glm::vec4> texels;
+    const glm::vec4& at(int x, int y, int z) const { return texels[voxelIndex(n, x, y, z)]; }
+    glm::vec4& at(int x, int y, int z) { return texels[voxelIndex(n, x, y, z)]; }
+};
+
+// Reads one mip of an RGBA16F 3D image kept in GENERAL (all voxel volumes).
+Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip = 0);
+// Writes mip 0 of an RGBA16F 3D image (values rounded to fp16), leaving it in GENERAL.
+void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume);
+
+// The accum volume's layout on the host: slab c of N^3 floats at z + c*N.
+struct AccumVolume {
+    explicit AccumVolume(uint32_t n) : n(n), data(size_t(n) * n * n * shader::VOXEL_CHANNELS, 0.0f) {}
+    float& at(int x, int y, int z, uint32_t channel) {
+        return data[voxelIndex(n, x, y, z + int(channel * n))];
+    }
+    float at(int x, int y, int z, uint32_t channel) const {
+        return data[voxelIndex(n, x, y, z + int(channel * n))];
+    }
+    uint32_t n;
+    std::vector<float> data;
+};
+
+void uploadAccum(const vxgi::VoxelVolumes& volumes, const AccumVolume& accum);
+AccumVolume readAccum(const vxgi::VoxelVolumes& volumes);
+
+// Inject's shadow-map binding must be valid even when no light samples it.
+struct UnusedShadowMap {
+    UnusedShadowMap();
+    gpu::Image map;  // D32, 2 layers, in SHADER_READ_ONLY_OPTIMAL
+    gpu::Sampler sampler;
+};
+
+// Six inward-facing quads (addQuad) of half-size h around `center`.
+void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h);
+
+}  // namespace dvsgi::test
