@@ -66,6 +66,9 @@ bool columnDepthRange(vec2 column, out vec2 range) {
 void main() {
     vec2 pc2 = gl_FragCoord.xy;
     if (any(lessThan(pc2, inAabb.xy)) || any(greaterThan(pc2, inAabb.zw))) discard;
+    ivec2 column = ivec2(pc2);
+    vec2 depth;
+    if (!columnDepthRange(vec2(column), depth)) discard;
 
     GpuMaterial m = materials[inMaterial];
     vec4 base = materialBaseColor(m, inUV);
@@ -77,9 +80,6 @@ void main() {
     // Every voxel layer that the triangle's part inside this pixel column
     // reaches; closed intervals, so a triangle lying exactly on a voxel face
     // marks the voxels on both sides.
-    ivec2 column = ivec2(pc2);
-    vec2 depth;
-    if (!columnDepthRange(vec2(column), depth)) discard;
     int N = int(grid.dims.x);
     int first = max(int(floor(depth.x - 1e-4)), 0), last = min(int(floor(depth.y + 1e-4)), N - 1);
     for (int layer = first; layer <= last; ++layer) {

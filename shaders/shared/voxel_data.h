@@ -44,7 +44,9 @@ DVSGI_CHECK_SIZE(VoxelGrid, 32);
 
 struct VoxelizePush {
     uvec4 ids;   // x draw index
-    uvec4 mode;  // x VOXELIZE_STATIC/DYNAMIC, y 1 = dilate in the geometry shader
+    uvec4 mode;  // x VOXELIZE_STATIC/DYNAMIC, y 1 = dilate in the geometry shader,
+                 // z float bits of the dilation margin beyond half a pixel (two sub-pixel steps,
+                 //   so grown edges survive the rasterizer's vertex snapping)
 };
 DVSGI_CHECK_SIZE(VoxelizePush, 32);
 

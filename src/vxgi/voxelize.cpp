@@ -1,5 +1,9 @@
 #include "vxgi/voxelize.h"
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
 #include "gpu/barriers.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
@@ -118,12 +122,17 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, con
     vkCmdBindIndexBuffer(cmd, scene.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     const VkShaderStageFlags vgf =
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    // The dilation must outgrow the rasterizer's vertex snapping (see
+    // voxelize.geom): two steps of its sub-pixel grid, 1/128 pixel at 8 bits.
+    const int subPixelBits = int(std::max(ctx_.properties.limits.subPixelPrecisionBits, 1u));
+    const float margin = std::ldexp(1.0f, 1 - subPixelBits);
+    const uint32_t marginBits = std::bit_cast<uint32_t>(margin);
     for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
         const render::DrawRange& r = scene.ranges[i];
         if (r.dynamic != dynamic) continue;
         const sh::VoxelizePush push{glm::uvec4(i, 0, 0, 0),
                                     glm::uvec4(dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC,
-                                               hardware_ ? 0u : 1u, 0u, 0u)};
+                                               hardware_ ? 0u : 1u, marginBits, 0u)};
         gpu::pushConstants(cmd, voxelize_, vgf, push);
         vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
     }

@@ -44,6 +44,7 @@ render::RenderSettings settings(uint32_t size) {
     render::RenderSettings s;
     s.width = s.height = size;
     s.shadowMapSize = 1024;
+    s.voxels = 0;  // direct light only: these are analytic checks of the direct path
     return s;
 }
 

@@ -1,0 +1,181 @@
+// What the voxels hold: summed attributes whose averages (sum / CH_COUNT) are
+// fragment-weighted means of the surfaces inside, without clamping.
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+#include "vox_helper.h"
+
+namespace dvsgi::test {
+namespace {
+
+namespace sh = dvsgi::shader;
+
+class VoxelAttributes : public GpuTest {};
+
+const vxgi::GridSpec kGrid = exactGrid(glm::vec3(0.0f), 1.0f, 32);
+const glm::vec3 kRed(1, 0, 0), kBlue(0, 0, 1);
+
+using Counts = std::vector<uint32_t>;  // per voxel, VoxelSet order
+
+// Fragments an axis-aligned rectangle lying strictly inside one voxel layer
+// sends to each voxel: one per triangle whose closed projection touches the
+// voxel's column. Both triangles of a rectangle touch the columns along their
+// shared diagonal, so those get two.
+Counts expectedCounts(const scene::Scene& s) {
+    Counts c(size_t(kGrid.n) * kGrid.n * kGrid.n, 0);
+    for (const Triangle& t : voxelTriangles(s, kGrid)) {
+        VoxelSet one = referenceVoxelize({t}, kGrid.n);
+        for (size_t i = 0; i < c.size(); ++i) c[i] += one.bits[i];
+    }
+    return c;
+}
+
+struct TwoLayers {
+    VoxelReadback a, b, both;
+    Counts expectA, expectB;
+};
+
+// Voxelizes rectangle A alone, B alone, and both together.
+TwoLayers twoRects(glm::vec3 albedoA, glm::vec3 loA, glm::vec3 hiA, float signA, glm::vec3 albedoB, glm::vec3 loB,
+                   glm::vec3 hiB, float signB) {
+    scene::Scene sa, sb, sab;
+    addRect(sa, addMaterial(sa, albedoA), loA, hiA, 1, signA);
+    addRect(sb, addMaterial(sb, albedoB), loB, hiB, 1, signB);
+    addRect(sab, addMaterial(sab, albedoA), loA, hiA, 1, signA);
+    addRect(sab, addMaterial(sab, albedoB), loB, hiB, 1, signB);
+    return {voxelizeScene(sa, kGrid), voxelizeScene(sb, kGrid), voxelizeScene(sab, kGrid), expectedCounts(sa),
+            expectedCounts(sb)};
+}
+
+TEST_F(VoxelAttributes, TwoSurfacesInOneLayerAverage) {
+    // Planes y = 10.25 and 10.75 both lie in layer y = 10 and cover the faces
+    // of the voxels x, z in [12, 20).
+    const TwoLayers r = twoRects(kRed, {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, kBlue, {12, 10.75f, 12},
+                                 {20, 10.75f, 20}, 1.0f);
+    const int n = int(kGrid.n);
+    int interior = 0, diagonal = 0;
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const size_t i = (size_t(z) * n + size_t(y)) * n + size_t(x);
+                const float ca = r.a.count(x, y, z), cb = r.b.count(x, y, z), c = r.both.count(x, y, z);
+                ASSERT_EQ(ca, float(r.expectA[i])) << x << " " << y << " " << z;
+                ASSERT_EQ(cb, float(r.expectB[i])) << x << " " << y << " " << z;
+                ASSERT_EQ(c, ca + cb) << x << " " << y << " " << z;
+                if (c == 0.0f) continue;
+                ASSERT_EQ(y, 10);
+                // Same footprint, same diagonal: every voxel holds as many red
+                // fragments as blue ones, so the mean is exact.
+                EXPECT_NEAR(r.both.average(x, y, z, sh::CH_ALBEDO_R), 0.5f, 1e-5f);
+                EXPECT_EQ(r.both.average(x, y, z, sh::CH_ALBEDO_G), 0.0f);
+                EXPECT_NEAR(r.both.average(x, y, z, sh::CH_ALBEDO_B), 0.5f, 1e-5f);
+                if (x >= 12 && x < 20 && z >= 12 && z < 20) {
+                    ++interior;
+                    if (c == 2.0f)
+                        continue;
+                    ++diagonal;
+                    EXPECT_EQ(c, 4.0f) << x << " " << z;
+                }
+            }
+    EXPECT_EQ(interior, 64);
+    std::printf("interior voxels: %d, %d of them on the rectangles' shared diagonal (count 4, else 2)\n", interior,
+                diagonal);
+}
+
+TEST_F(VoxelAttributes, PartialOverlapIsCountWeighted) {
+    // Red covers [12, 20)^2, blue only x in [12, 16).
+    const TwoLayers r = twoRects(kRed, {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, kBlue, {12, 10.75f, 12},
+                                 {16, 10.75f, 20}, 1.0f);
+    const int n = int(kGrid.n);
+    int mixed = 0, redOnly = 0;
+    for (int z = 0; z < n; ++z)
+        for (int x = 0; x < n; ++x) {
+            const int y = 10;
+            const size_t i = (size_t(z) * n + size_t(y)) * n + size_t(x);
+            const float ca = r.a.count(x, y, z), cb = r.b.count(x, y, z), c = r.both.count(x, y, z);
+            ASSERT_EQ(ca, float(r.expectA[i]));
+            ASSERT_EQ(cb, float(r.expectB[i]));
+            ASSERT_EQ(c, ca + cb);
+            if (c == 0.0f) continue;
+            const glm::vec3 expected = (kRed * ca + kBlue * cb) / c;
+            EXPECT_NEAR(r.both.average(x, y, z, sh::CH_ALBEDO_R), expected.r, 1e-5f) << x << " " << z;
+            EXPECT_EQ(r.both.average(x, y, z, sh::CH_ALBEDO_G), 0.0f);
+            EXPECT_NEAR(r.both.average(x, y, z, sh::CH_ALBEDO_B), expected.b, 1e-5f) << x << " " << z;
+            if (cb == 0.0f) {
+                ++redOnly;
+                EXPECT_EQ(r.both.average(x, y, z, sh::CH_ALBEDO_R), 1.0f);
+            } else {
+                ++mixed;
+            }
+        }
+    EXPECT_GT(mixed, 0);
+    EXPECT_GT(redOnly, 0);
+    // Nothing outside the layer.
+    EXPECT_EQ(r.both.occupancy().count(), size_t(mixed + redOnly));
+}
+
+TEST_F(VoxelAttributes, EmissionIsNotClamped) {
+    scene::Scene s;
+    const glm::vec3 emission(500, 200, 1000);
+    addRect(s, addMaterial(s, glm::vec3(0.2f, 0.4f, 0.6f), emission), {5, 7.5f, 5}, {11, 7.5f, 13}, 1, 1.0f);
+    const VoxelReadback r = voxelizeScene(s, kGrid);
+    const VoxelSet occ = r.occupancy();
+    ASSERT_GT(occ.count(), 0u);
+    for (int z = 0; z < int(kGrid.n); ++z)
+        for (int x = 0; x < int(kGrid.n); ++x) {
+            if (!occ.get(x, 7, z)) continue;
+            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_R), 500.0f);
+            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_G), 200.0f);
+            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_B), 1000.0f);
+            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_ALBEDO_G), 0.4f);
+        }
+}
+
+TEST_F(VoxelAttributes, OppositeNormalsKeepBothOrientations) {
+    const TwoLayers r = twoRects(glm::vec3(0.5f), {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, glm::vec3(0.5f),
+                                 {12, 10.75f, 12}, {20, 10.75f, 20}, -1.0f);
+    const VoxelSet occ = r.both.occupancy();
+    ASSERT_GT(occ.count(), 0u);
+    for (int z = 0; z < int(kGrid.n); ++z)
+        for (int x = 0; x < int(kGrid.n); ++x) {
+            if (!occ.get(x, 10, z)) continue;
+            EXPECT_NEAR(r.both.average(x, 10, z, sh::CH_NORMAL_POS_Y), 0.5f, 1e-6f);
+            EXPECT_NEAR(r.both.average(x, 10, z, sh::CH_NORMAL_NEG_Y), 0.5f, 1e-6f);
+            for (uint32_t ch : {sh::CH_NORMAL_POS_X, sh::CH_NORMAL_NEG_X, sh::CH_NORMAL_POS_Z, sh::CH_NORMAL_NEG_Z})
+                EXPECT_EQ(r.both.at(x, 10, z, ch), 0.0f);
+        }
+}
+
+TEST_F(VoxelAttributes, TiltedNormalWeightsSumToOne) {
+    // Normal (0, 0.6, 0.8) and a general one: the six weights of every voxel
+    // sum to the fragment count, split by n_a^2.
+    scene::Scene s;
+    const int m = addMaterial(s, glm::vec3(0.5f));
+    addTriangles(s, m, {{glm::vec3(4, 4, 7), glm::vec3(14, 4, 7), glm::vec3(4, 8, 4)}});
+    addTriangles(s, m, {{glm::vec3(18, 18, 20), glm::vec3(27, 21, 18), glm::vec3(20, 27, 25)}});
+    const VoxelReadback r = voxelizeScene(s, kGrid);
+    const VoxelSet occ = r.occupancy();
+    const glm::vec3 n1 = glm::normalize(glm::cross(glm::vec3(10, 0, 0), glm::vec3(0, 4, -3)));
+    ASSERT_NEAR(n1.y, 0.6f, 1e-6f);
+    int checked = 0;
+    for (int z = 0; z < int(kGrid.n); ++z)
+        for (int y = 0; y < int(kGrid.n); ++y)
+            for (int x = 0; x < int(kGrid.n); ++x) {
+                if (!occ.get(x, y, z)) continue;
+                float sum = 0.0f;
+                for (uint32_t ch = sh::CH_NORMAL_POS_X; ch <= sh::CH_NORMAL_NEG_Z; ++ch) sum += r.average(x, y, z, ch);
+                EXPECT_NEAR(sum, 1.0f, 1e-5f) << x << " " << y << " " << z;
+                if (x < 16) {
+                    EXPECT_NEAR(r.average(x, y, z, sh::CH_NORMAL_POS_Y), 0.36f, 1e-5f);
+                    EXPECT_NEAR(r.average(x, y, z, sh::CH_NORMAL_POS_Z), 0.64f, 1e-5f);
+                }
+                ++checked;
+            }
+    EXPECT_GT(checked, 50);
+}
+
+}  // namespace
+}  // namespace dvsgi::test

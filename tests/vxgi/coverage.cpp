@@ -1,0 +1,105 @@
+#include "coverage.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+
+namespace dvsgi::test {
+
+glm::dvec3 Rng::unitVector() {
+    for (;;) {
+        const glm::dvec3 v(range(-1, 1), range(-1, 1), range(-1, 1));
+        const double l = glm::length(v);
+        if (l > 0.05 && l <= 1.0) return v / l;
+    }
+}
+
+void Packing::add(const std::vector<LocalTriangle>& local, uint32_t pitch, uint32_t n) {
+    const uint32_t perAxis = n / pitch, perGrid = perAxis * perAxis * perAxis;
+    for (size_t i = 0; i < local.size(); ++i) {
+        if (i % perGrid == 0) {
+            // Grids tile a 4 x 4 x k block of world space.
+            const uint32_t k = uint32_t(grids.size());
+            const glm::vec3 origin(float(n * (k % 4)), float(n * ((k / 4) % 4)), float(n * (k / 16)));
+            grids.push_back(exactGrid(origin, 1.0f, n));
+        }
+        const uint32_t c = uint32_t(i % perGrid);
+        const glm::dvec3 cell(double(c % perAxis), double((c / perAxis) % perAxis), double(c / (perAxis * perAxis)));
+        const glm::dvec3 base = glm::dvec3(grids.back().origin) + cell * double(pitch);
+        WorldTriangle w;
+        for (int k = 0; k < 3; ++k) w[size_t(k)] = glm::vec3(base + local[i][size_t(k)]);
+        tris.push_back(w);
+    }
+}
+
+namespace {
+
+std::string describe(const Triangle& t) {
+    std::ostringstream o;
+    o.precision(9);
+    for (int k = 0; k < 3; ++k) o << (k ? " " : "") << "(" << t.v[k].x << ", " << t.v[k].y << ", " << t.v[k].z << ")";
+    return o.str();
+}
+
+}  // namespace
+
+CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSpec>& grids, const std::string& label) {
+    render::SceneGpu sceneGpu(context(), s);
+    vxgi::Voxelizer voxelizer(context(), sceneGpu, false);
+    CoverageReport total;
+    size_t triangles = 0;
+    for (size_t g = 0; g < grids.size(); ++g) {
+        const vxgi::GridSpec& grid = grids[g];
+        vxgi::VoxelVolumes volumes(context(), grid);
+        context().submitAndWait([&](VkCommandBuffer cmd) {
+            voxelizer.clearAll(cmd, volumes, nullptr);
+            voxelizer.voxelize(cmd, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
+        });
+        const VoxelSet gpu = readVoxels(volumes).occupancy();
+        const std::vector<Triangle> tris = voxelTriangles(s, grid);
+        triangles = tris.size();
+        const VoxelSet ref = referenceVoxelize(tris, grid.n);
+        const CoverageReport r = compareCoverage(ref, gpu);
+        for (const glm::ivec3& v : r.missList) {
+            std::string culprits;
+            for (const Triangle& t : tris)
+                if (triangleBoxOverlap(t, glm::dvec3(v), glm::dvec3(v) + 1.0)) culprits += "\n    " + describe(t);
+            ADD_FAILURE() << label << ": grid " << g << " misses voxel (" << v.x << ", " << v.y << ", " << v.z
+                          << "), touched by (voxel coordinates):" << culprits;
+        }
+        for (const glm::ivec3& v : r.farList) {
+            std::string near;
+            for (const Triangle& t : tris)
+                if (triangleBoxOverlap(t, glm::dvec3(v) - 2.0, glm::dvec3(v) + 3.0)) near += "\n    " + describe(t);
+            ADD_FAILURE() << label << ": grid " << g << " marks voxel (" << v.x << ", " << v.y << ", " << v.z
+                          << "), more than one voxel away from every reference voxel; triangles within 2 voxels:"
+                          << near;
+        }
+        total.reference += r.reference;
+        total.gpu += r.gpu;
+        total.misses += r.misses;
+        total.extras += r.extras;
+        total.farExtras += r.farExtras;
+    }
+    std::printf("[%s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
+                "extras %zu (%.1f%% of the reference), extras beyond 1 voxel %zu\n",
+                label.c_str(), triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
+                total.misses, total.extras, total.reference ? 100.0 * double(total.extras) / double(total.reference) : 0.0,
+                total.farExtras);
+    return total;
+}
+
+CoverageReport runCoverage(const std::vector<WorldTriangle>& tris, const std::vector<vxgi::GridSpec>& grids,
+                           const std::string& label) {
+    scene::Scene s;
+    s.source = "test:" + label;
+    const int m = addMaterial(s, glm::vec3(0.8f));
+    addTriangles(s, m, tris);
+    return runCoverage(s, grids, label);
+}
+
+}  // namespace dvsgi::test

@@ -1,0 +1,130 @@
+// Coverage of whole scenes: the built-in Cornell box on a fitted grid, and
+// generated meshes placed with rotations, against the CPU reference of every
+// placed triangle.
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include <glm/gtc/constants.hpp>
+#include <gtest/gtest.h>
+
+#include "coverage.h"
+#include "gpu_fixture.h"
+#include "scene/load.h"
+
+namespace dvsgi::test {
+namespace {
+
+class SceneCoverage : public GpuTest {};
+
+void expectConservative(const CoverageReport& r) {
+    EXPECT_EQ(r.misses, 0u);
+    EXPECT_EQ(r.farExtras, 0u);
+    EXPECT_GT(r.reference, 0u);
+}
+
+TEST_F(SceneCoverage, CornellBox64) {
+    const scene::Scene s = scene::builtinCornellBox();
+    const auto items = scene::drawItems(s, scene::worldMatrices(s));
+    const vxgi::GridSpec grid = vxgi::fitGrid(scene::worldBounds(s, items), 64);
+    // fitGrid leaves one voxel of margin, so the walls lie on voxel faces up
+    // to float rounding: the GPU's depth slack then marks the layers on both
+    // sides where the reference, exact on the rounded coordinates, may mark
+    // one. Those extras stay within one voxel.
+    glm::dvec3 lo(1e30), hi(-1e30);
+    for (const Triangle& t : voxelTriangles(s, grid))
+        for (const glm::dvec3& v : t.v) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    std::printf("Cornell box spans voxel coordinates (%.7f, %.7f, %.7f) - (%.7f, %.7f, %.7f)\n", lo.x, lo.y, lo.z,
+                hi.x, hi.y, hi.z);
+    expectConservative(runCoverage(s, {grid}, "Cornell box, N=64"));
+}
+
+// Smooth-shaded meshes as one primitive each.
+scene::Primitive icosphere(int subdivisions) {
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    std::vector<glm::dvec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                                 {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<glm::uvec3> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                                 {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (glm::dvec3& p : v) p = glm::normalize(p);
+    for (int s = 0; s < subdivisions; ++s) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            const auto key = std::minmax(a, b);
+            auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            v.push_back(glm::normalize(v[a] + v[b]));
+            return mid[key] = uint32_t(v.size() - 1);
+        };
+        std::vector<glm::uvec3> next;
+        for (const glm::uvec3& tri : f) {
+            const uint32_t a = midpoint(tri.x, tri.y), b = midpoint(tri.y, tri.z), c = midpoint(tri.z, tri.x);
+            next.insert(next.end(), {{tri.x, a, c}, {tri.y, b, a}, {tri.z, c, b}, {a, b, c}});
+        }
+        f = next;
+    }
+    scene::Primitive p;
+    for (const glm::dvec3& q : v) {
+        scene::Vertex vert;
+        vert.position = glm::vec3(q);
+        vert.normal = glm::vec3(q);
+        p.vertices.push_back(vert);
+    }
+    for (const glm::uvec3& tri : f) p.indices.insert(p.indices.end(), {tri.x, tri.y, tri.z});
+    return p;
+}
+
+scene::Primitive torus(double major, double minor, uint32_t segments, uint32_t sides) {
+    scene::Primitive p;
+    for (uint32_t i = 0; i < segments; ++i)
+        for (uint32_t j = 0; j < sides; ++j) {
+            const double u = 2.0 * glm::pi<double>() * i / segments, w = 2.0 * glm::pi<double>() * j / sides;
+            const glm::dvec3 n(std::cos(u) * std::cos(w), std::sin(w), std::sin(u) * std::cos(w));
+            const glm::dvec3 c(std::cos(u) * major, 0.0, std::sin(u) * major);
+            scene::Vertex vert;
+            vert.position = glm::vec3(c + n * minor);
+            vert.normal = glm::vec3(n);
+            p.vertices.push_back(vert);
+        }
+    for (uint32_t i = 0; i < segments; ++i)
+        for (uint32_t j = 0; j < sides; ++j) {
+            const uint32_t a = i * sides + j, b = ((i + 1) % segments) * sides + j;
+            const uint32_t c = ((i + 1) % segments) * sides + (j + 1) % sides, d = i * sides + (j + 1) % sides;
+            p.indices.insert(p.indices.end(), {a, b, c, a, c, d});
+        }
+    return p;
+}
+
+int addMeshNode(scene::Scene& s, scene::Primitive p, int material, glm::vec3 t, glm::quat r, glm::vec3 scale) {
+    p.material = uint32_t(material);
+    s.primitives.push_back(std::move(p));
+    s.meshes.push_back(scene::Mesh{"mesh", {uint32_t(s.primitives.size() - 1)}});
+    scene::Node n;
+    n.mesh = int(s.meshes.size() - 1);
+    n.translation = t;
+    n.rotation = r;
+    n.scale = scale;
+    s.nodes.push_back(n);
+    s.roots.push_back(int(s.nodes.size() - 1));
+    return int(s.nodes.size() - 1);
+}
+
+TEST_F(SceneCoverage, IcosphereAndTorus32) {
+    // Grid [-2, 2]^3 with voxels of 1/8: both exact in float.
+    const vxgi::GridSpec grid = vxgi::gridForBox(glm::vec3(-2.0f), glm::vec3(2.0f), 32);
+    ASSERT_EQ(grid.voxelSize, 0.125f);
+    ASSERT_EQ(grid.origin, glm::vec3(-2.0f));
+    scene::Scene s;
+    const int m = addMaterial(s, glm::vec3(0.7f));
+    // 320 triangles, radius 0.9 m = 7.2 voxels.
+    addMeshNode(s, icosphere(2), m, glm::vec3(-0.83f, 0.71f, 0.05f),
+                glm::angleAxis(0.4f, glm::normalize(glm::vec3(1, 2, 3))), glm::vec3(0.9f));
+    // 576 triangles, tube radius 2.4 voxels, tilted.
+    addMeshNode(s, torus(0.9, 0.3, 32, 9), m, glm::vec3(0.6f, -0.55f, 0.1f),
+                glm::angleAxis(1.1f, glm::normalize(glm::vec3(-1, 0.5f, 0.2f))), glm::vec3(1.0f));
+    expectConservative(runCoverage(s, {grid}, "icosphere and torus, N=32"));
+}
+
+}  // namespace
+}  // namespace dvsgi::test
