@@ -50,8 +50,8 @@ struct RenderOptions {
     float coneStep = 0.5f;           // beta
     float coneMinStep = 0.5f;        // voxels
     float maxDistance = 0.0f;        // metres, 0 = grid diagonal
-    float coneOffset = 1.5f;         // origin offset along the normal, voxels
-    float aoLambda = 0.1f;           // f(r) = 1/(1 + lambda r), r in voxels
+    float coneOffset = 2.5f;         // origin offset along the normal, voxels
+    float aoLambda = 0.5f;           // f(r) = 1/(1 + lambda r), r in voxels
     bool ao = false;                 // multiply indirect terms by AO in the composite
     bool specular = true;
     float minSpecularAngle = 1.0f;   // degrees, half-angle

@@ -30,11 +30,19 @@ vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float 
     vec4 acc = vec4(0.0);
     ao = 0.0;
     float t = params.trace.w * s;
+    float stepPrev = 0.0;
     for (int i = 0; i < 1024 && t < params.trace.z && acc.a < 0.995; ++i) {
         float d = max(2.0 * t * tanHalf, s);  // diameter = 2 t tan(theta/2), at least a voxel
         float level = log2(d / s);
         vec3 uvw = (origin + dir * t - grid.originSize.xyz) / extent;
-        if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
+        // A step that leaves the grid ends with one sample on its boundary, so
+        // a wall in the last cells is not stepped over (energy would be lost).
+        bool last = any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)));
+        if (last) {
+            vec3 prev = (origin + dir * max(t - stepPrev, 0.0) - grid.originSize.xyz) / extent;
+            if (any(lessThan(prev, vec3(0.0))) || any(greaterThan(prev, vec3(1.0)))) break;
+            uvw = clamp(uvw, vec3(0.0), vec3(1.0));
+        }
         // Directional level 0 voxels are two voxels wide.
         vec4 smp = sampleDirectional(uvw, dir, clamp(level - 1.0, 0.0, maxLevel));
 #ifdef CONE_USE_RADIANCE_VOLUME
@@ -49,7 +57,9 @@ vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float 
         acc.rgb += (1.0 - acc.a) * c;
         acc.a += (1.0 - acc.a) * ac;
         ao += (1.0 - ao) * ac / (1.0 + aoLambda * t / s);
+        if (last) break;
         t += stepLen;
+        stepPrev = stepLen;
     }
     return acc;
 }

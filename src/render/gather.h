@@ -23,8 +23,8 @@ struct GatherSettings {
     float minStepVoxels = 0.5f;   // floor of the step
     float maxDistance = 0.0f;     // metres; 0 = the grid's diagonal
     float firstSampleVoxels = 1.0f;
-    float normalOffsetVoxels = 1.5f;
-    float aoLambda = 0.1f;        // f(r) = 1 / (1 + lambda r), r in voxels
+    float normalOffsetVoxels = 2.5f;  // clears the 2-voxel directional cells' trilinear footprint
+    float aoLambda = 0.5f;        // f(r) = 1 / (1 + lambda r), r in voxels
     bool specular = true;
     float minSpecularDegrees = 1.0f;  // half-angle of the narrowest specular cone, degrees
     float traceScale = 1.0f;      // trace resolution / internal resolution

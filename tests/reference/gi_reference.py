@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""Full global illumination of both Cornell glTF scenes (256x256, 64^3 voxels)
+against the path-traced references (512x512, averaged over 2x2 blocks), with
+the project's metric definitions (shared/tools/compare.py). The bounds only
+catch regressions (relative RMSE <= 0.35, mean luminance within 25 %); the
+measured numbers are recorded in docs/quality.md.
+Usage: gi_reference.py path/to/dvsgi path/to/shared [out.json]"""
+import json, os, subprocess, sys, tempfile
+import numpy as np
+import OpenImageIO as oiio
+
+dvsgi, shared = sys.argv[1], sys.argv[2]
+sys.path.insert(0, os.path.join(shared, "tools"))
+if not os.path.isdir(os.path.join(shared, "reference/cornell-box")):
+    print("shared references not found under %s: skipped" % shared)
+    sys.exit(0)
+import compare  # noqa: E402  (shared/tools/compare.py: the metric definitions)
+
+# Extra voxel bounces per scene: the emissive box is lit only through cones from
+# a small emitter and its albedo-1 walls need more bounces (docs/quality.md).
+CASES = [("cornell-lights", ["--bounces", "1"]), ("cornell-emissive", ["--bounces", "4"])]
+tmp = tempfile.mkdtemp(prefix="dvsgi-gi-")
+results, failures = {}, []
+for name, extra in CASES:
+    scene = os.path.join(shared, "scenes/cornell-box/%s.gltf" % name)
+    out = os.path.join(tmp, name + ".exr")
+    subprocess.run([dvsgi, "render", scene, "--width", "256", "--height", "256", "--voxels", "64", "--out", out,
+                    "--png", "none", "--quiet", "--validate", *extra], check=True, timeout=600)
+    cand = compare.read_rgb(out)
+    ref = compare.read_rgb(os.path.join(shared, "reference/cornell-box/%s.exr" % name))
+    ref = ref.reshape(256, 2, 256, 2, 3).mean(axis=(1, 3))
+    m, _, _ = compare.compare(cand, ref)
+    results[name] = {k: m[k] for k in ("rel_rmse", "rel_rmse_pixel", "mean_lum_ratio", "frac_within_tol")}
+    results[name]["options"] = extra
+    print("%-18s rel_rmse %.4f  mean_lum_ratio %.4f  rel_rmse_pixel %.4f  within10%% %.3f" %
+          (name, m["rel_rmse"], m["mean_lum_ratio"], m["rel_rmse_pixel"], m["frac_within_tol"]))
+    if not m["rel_rmse"] <= 0.35:
+        failures.append("%s: relative RMSE %.4f > 0.35" % (name, m["rel_rmse"]))
+    if not abs(m["mean_lum_ratio"] - 1.0) <= 0.25:
+        failures.append("%s: mean luminance ratio %.4f beyond 25 %%" % (name, m["mean_lum_ratio"]))
+if len(sys.argv) > 3:
+    json.dump(results, open(sys.argv[3], "w"), indent=2)
+print("\n".join("FAIL " + f for f in failures))
+print("%d passed, %d failed" % (2 * len(CASES) - len(failures), len(failures)))
+sys.exit(1 if failures else 0)
