@@ -68,9 +68,11 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     composite_ = std::make_unique<CompositePass>(ctx, settings.width, settings.height, settings.supersample);
     timers_ = std::make_unique<gpu::GpuTimers>(ctx);
     gather_ = std::make_unique<GatherPass>(ctx, iw, ih, settings.gather.traceScale);
+    // Clamp to edge, not to a transparent border: a border would halve the
+    // opacity of walls on the grid's edge and cones would leave the grid
+    // before becoming opaque (energy lost). Cones stop at the grid's edge.
     gpu::SamplerDesc vs;
-    vs.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    vs.transparentBorder = true;
+    vs.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     volumeSampler_ = gpu::Sampler(ctx, vs);
     if (settings.voxels == 0) {
         // The lighting pass always binds voxel volumes; without voxels it gets

@@ -124,7 +124,7 @@ private:
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
     std::unique_ptr<GatherPass> gather_;
-    gpu::Sampler volumeSampler_;  // trilinear + mips, transparent black outside the grid
+    gpu::Sampler volumeSampler_;  // trilinear + mips, clamped to the grid's edge
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     std::unique_ptr<gpu::GpuTimers> timers_;
