@@ -48,6 +48,7 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n) {
     return {
         {"voxel attributes (13 channels)", "R32_SFLOAT", n3 * sh::VOXEL_CHANNELS * 4},
         {"static flags", "R8_UINT", n3},
+        {"voxel direct light", "R16G16B16A16_SFLOAT", n3 * 8},
         {"radiance", "R16G16B16A16_SFLOAT", n3 * 8},
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
     };
