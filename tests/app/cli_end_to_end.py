@@ -96,6 +96,35 @@ else:
     if "shadow maps" not in so or "GPU ms" not in so:
         failures.append("no timing table on stdout")
 
+# Issue 3-5 surface: bad values name their option.
+expect_error("bad --voxels", ["render", "--voxels", "100"], "--voxels")
+expect_error("bad --view", ["render", "--view", "voxels:colour"], "--view")
+expect_error("bad --output", ["render", "--output", "everything"], "--output")
+expect_error("unknown --dynamic node", ["render", "--dynamic", "no_such_node", "--out", out], "--dynamic")
+expect_error("missing --add-model", ["render", "--add-model", os.path.join(TMP, "nope.ply"), "--out", out], "nope.ply")
+
+# Several frames with an added moving model, every frame written; a voxel view; single terms.
+checks += 3
+bunny = os.path.join(os.path.dirname(__file__), "../../../shared/scenes/stanford-bunny/bun_zipper_res2.ply")
+model = ["--add-model", bunny] if os.path.exists(bunny) else []
+pattern = os.path.join(TMP, "frame_##.exr")
+rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--frames", "3", "--out", pattern,
+                 "--png", "none", "--validate", "--quiet", *model)
+written = [os.path.exists(os.path.join(TMP, "frame_%02d.exr" % i)) for i in range(3)]
+print("%-34s rc=%d frames %s" % ("frames + moving model", rc, written))
+if rc != 0 or not all(written):
+    failures.append("frames: rc=%d written=%s %s" % (rc, written, se))
+for view in ("voxels:albedo", "voxels:radiance"):
+    rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--view", view, "--out", out,
+                     "--validate", "--quiet")
+    if rc != 0:
+        failures.append("%s: rc=%d %s" % (view, rc, se))
+for term in ("indirect", "ao"):
+    rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--output", term,
+                     "--trace-scale", "0.5", "--shadows", "cone", "--out", out, "--validate", "--quiet")
+    if rc != 0:
+        failures.append("--output %s: rc=%d %s" % (term, rc, se))
+
 rc, so, _ = run("--help")
 for opt in ("--out", "--png", "--width", "--height", "--camera", "--exposure", "--metrics", "--device", "--validate"):
     if opt not in so:
