@@ -58,6 +58,11 @@ float parseFloat(std::string_view opt, std::string_view text, float lo, float hi
     return v;
 }
 
+bool parseOnOff(std::string_view opt, std::string_view v) {
+    if (v != "on" && v != "off") badValue(opt, "on or off", v);
+    return v == "on";
+}
+
 bool endsWithNoCase(std::string_view s, std::string_view suffix) {
     if (s.size() < suffix.size()) return false;
     return std::equal(suffix.begin(), suffix.end(), s.end() - suffix.size(), [](char a, char b) {
@@ -189,8 +194,7 @@ const std::vector<OptionSpec>& optionSpecs() {
          }},
         {"--normal-weighted", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
-             if (v != "on" && v != "off") badValue(opt, "on or off", v);
-             o.normalWeighted = v == "on";
+             o.normalWeighted = parseOnOff(opt, v);
          }},
         {"--voxel-occlusion", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
@@ -239,13 +243,11 @@ const std::vector<OptionSpec>& optionSpecs() {
          }},
         {"--ao", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
-             if (v != "on" && v != "off") badValue(opt, "on or off", v);
-             o.ao = v == "on";
+             o.ao = parseOnOff(opt, v);
          }},
         {"--specular", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
-             if (v != "on" && v != "off") badValue(opt, "on or off", v);
-             o.specular = v == "on";
+             o.specular = parseOnOff(opt, v);
          }},
         {"--shadows", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {

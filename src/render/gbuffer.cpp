@@ -102,16 +102,10 @@ void GBufferPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::
         .storageBuffer(sh::BIND_GEOM_DRAWS, scene.draws.handle())
         .storageBuffer(sh::BIND_GEOM_MATERIALS, scene.materials.handle())
         .push(ctx_, cmd, pipeline_);
-    VkDescriptorSet set = scene.textureTable->set();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), sh::SET_TEXTURES, 1, &set, 0,
-                            nullptr);
+    scene.bindGeometry(cmd, pipeline_.layout());
     const VkViewport viewport{0, 0, float(width_), float(height_), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
-    VkDeviceSize offset = 0;
-    VkBuffer vb = scene.vertices.handle();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-    vkCmdBindIndexBuffer(cmd, scene.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
         const sh::DrawPush push{glm::uvec4(i, 0, 0, 0)};
         gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_VERTEX_BIT, push);

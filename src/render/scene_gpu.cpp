@@ -117,6 +117,15 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "draws");
 }
 
+void SceneGpu::bindGeometry(VkCommandBuffer cmd, VkPipelineLayout layout) const {
+    VkDescriptorSet set = textureTable->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, sh::SET_TEXTURES, 1, &set, 0, nullptr);
+    VkDeviceSize offset = 0;
+    VkBuffer vb = vertices.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    vkCmdBindIndexBuffer(cmd, indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+}
+
 void SceneGpu::updateDraws(const gpu::Context& ctx, const scene::Scene& scene,
                            const std::vector<scene::DrawItem>& items) {
     // Animation moves nodes but never adds or removes draws.

@@ -23,6 +23,10 @@ class SceneGpu {
 public:
     SceneGpu(const gpu::Context& ctx, const scene::Scene& scene);
 
+    // Binds what every pass that rasterizes the scene needs: the texture table
+    // (set 1 of `layout`), the vertex and the index buffer.
+    void bindGeometry(VkCommandBuffer cmd, VkPipelineLayout layout) const;
+
     // Re-uploads the per-draw transforms (after animation). Blocks.
     void updateDraws(const gpu::Context& ctx, const scene::Scene& scene, const std::vector<scene::DrawItem>& items);
 

@@ -123,13 +123,7 @@ void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::B
         .storageBuffer(sh::BIND_GEOM_MATERIALS, scene.materials.handle())
         .storageBuffer(sh::BIND_GEOM_SHADOW_VIEWS, views.handle())
         .push(ctx_, cmd, opaque_);
-    VkDescriptorSet set = scene.textureTable->set();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, opaque_.layout(), sh::SET_TEXTURES, 1, &set, 0,
-                            nullptr);
-    VkDeviceSize offset = 0;
-    VkBuffer vb = scene.vertices.handle();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-    vkCmdBindIndexBuffer(cmd, scene.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    scene.bindGeometry(cmd, opaque_.layout());
     const VkViewport viewport{0, 0, float(size_), float(size_), 0, 1};
     const VkRect2D scissor{{0, 0}, {size_, size_}};
     // Slope-scaled bias handles grazing angles; the normal offset at lookup does the rest.

@@ -110,16 +110,10 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, con
         .storageImage(sh::BIND_VOX_ACCUM, v.accum.view())
         .storageImage(sh::BIND_VOX_FLAGS, v.flags.view())
         .push(ctx_, cmd, voxelize_);
-    VkDescriptorSet set = scene.textureTable->set();
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, voxelize_.layout(), sh::SET_TEXTURES, 1, &set, 0,
-                            nullptr);
+    scene.bindGeometry(cmd, voxelize_.layout());
     const VkViewport viewport{0, 0, float(n), float(n), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
-    VkDeviceSize offset = 0;
-    VkBuffer vb = scene.vertices.handle();
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
-    vkCmdBindIndexBuffer(cmd, scene.indices.handle(), 0, VK_INDEX_TYPE_UINT32);
     const VkShaderStageFlags vgf =
         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     // The dilation must outgrow the rasterizer's vertex snapping (see
