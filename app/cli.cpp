@@ -284,6 +284,17 @@ const std::vector<OptionSpec>& optionSpecs() {
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.addModelSize = parseFloat(opt, v, 1e-4f, 1e4f, "a size in metres in 0.0001..10000");
          }},
+        {"--view-frames", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.viewFrames = uint32_t(parseUnsigned(opt, v, 0, 1000000000, "an integer >= 0"));
+         }},
+        {"--screenshot", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             requireExtension(opt, v, ".exr", "a .exr file name");
+             o.screenshot = v;
+         }},
+        {"--vsync", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) { o.vsync = parseOnOff(opt, v); }},
         {"--bench-out", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              requireExtension(opt, v, ".json", "a .json file name");
@@ -508,6 +519,14 @@ std::string usageText() {
            "                       a circle through the scene, one turn per 120 frames\n"
            "  --add-model-size M   its largest extent in metres (default: 1/5 of the scene)\n"
            "  --help, -h           this text\n"
+           "\n"
+           "Viewer (dvsgi view; needs a display):\n"
+           "  Keys: WASD move, Q/E down/up, right mouse drag looks, scroll changes the speed,\n"
+           "  1-9 pick a scene camera, V toggles vsync, P takes a screenshot, Esc closes.\n"
+           "  --vsync on|off       FIFO presentation (default on) or the fastest mode available\n"
+           "  --view-frames K      close the window after K frames (default 0 = when closed)\n"
+           "  --screenshot FILE.exr  on closing, write the last frame as FILE.exr and FILE.png\n"
+           "                       (the same code as the screenshot key)\n"
            "\n"
            "Benchmark (dvsgi bench; see docs/benchmarks.md):\n"
            "  Without SCENE: the paper's Table II suite, Cornell box, Sibenik and Crytek Sponza\n"

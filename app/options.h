@@ -67,6 +67,11 @@ struct RenderOptions {
     std::string addModel;         // a model that moves on a circle through the scene (dynamic)
     float addModelSize = 0.0f;    // its largest extent in metres; 0 = 1/5 of the scene
 
+    // `dvsgi view` only (app/view_command.cpp); render and bench ignore these.
+    uint32_t viewFrames = 0;      // close the window after K frames; 0 = run until closed
+    std::string screenshot;       // EXR (+ PNG beside it) of the last frame when the window closes
+    bool vsync = true;            // FIFO present mode (on) or IMMEDIATE/MAILBOX (off)
+
     // `dvsgi bench` only (app/bench_command.cpp); render and view ignore these.
     std::string benchOut = "out/bench.json";
     std::string sharedDir = "../shared";     // holds scenes/ (the benchmark scenes)

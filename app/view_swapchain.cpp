@@ -1,0 +1,192 @@
+#include "view_swapchain.h"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "gpu/barriers.h"
+#include "gpu/check.h"
+#include "gpu/context.h"
+#include "gpu/resources.h"
+
+namespace dvsgi::app {
+
+namespace {
+
+// A raw barrier for a swapchain image (not a gpu::Image).
+void swapImageBarrier(VkCommandBuffer cmd, VkImage image, const gpu::ImageUse& from, const gpu::ImageUse& to) {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = from.stages;
+    b.srcAccessMask = from.access;
+    b.dstStageMask = to.stages;
+    b.dstAccessMask = to.access;
+    b.oldLayout = from.layout;
+    b.newLayout = to.layout;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+constexpr gpu::ImageUse kPresent{VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE};
+
+bool canBlit(VkPhysicalDevice pd, VkFormat f, VkFormatFeatureFlags need) {
+    VkFormatProperties p;
+    vkGetPhysicalDeviceFormatProperties(pd, f, &p);
+    return (p.optimalTilingFeatures & need) == need;
+}
+
+}  // namespace
+
+Swapchain::Swapchain(const gpu::Context& ctx, VkSurfaceKHR surface) : ctx_(ctx), surface_(surface) {
+    VkBool32 supported = VK_FALSE;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(ctx.physical, ctx.queueFamily, surface, &supported));
+    if (!supported)
+        throw gpu::GpuError(ctx.deviceName + " cannot present to this window from its queue",
+                            VK_ERROR_FEATURE_NOT_PRESENT);
+    if (!canBlit(ctx.physical, VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_FEATURE_BLIT_SRC_BIT))
+        throw gpu::GpuError(ctx.deviceName + " cannot blit from RGBA32F images", VK_ERROR_FORMAT_NOT_SUPPORTED);
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(ctx.device, &fi, nullptr, &acquireFence_));
+}
+
+Swapchain::~Swapchain() {
+    vkDeviceWaitIdle(ctx_.device);
+    destroy();
+    if (acquireFence_) vkDestroyFence(ctx_.device, acquireFence_, nullptr);
+}
+
+void Swapchain::destroy() {
+    if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
+    swapchain_ = VK_NULL_HANDLE;
+    images_.clear();
+}
+
+const char* Swapchain::presentModeName() const {
+    switch (mode_) {
+        case VK_PRESENT_MODE_FIFO_KHR: return "fifo (vsync)";
+        case VK_PRESENT_MODE_MAILBOX_KHR: return "mailbox";
+        case VK_PRESENT_MODE_IMMEDIATE_KHR: return "immediate";
+        default: return "other";
+    }
+}
+
+void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
+    vkDeviceWaitIdle(ctx_.device);
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(ctx_.physical, surface_, &caps));
+
+    uint32_t n = 0;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(ctx_.physical, surface_, &n, nullptr));
+    std::vector<VkSurfaceFormatKHR> formats(n);
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(ctx_.physical, surface_, &n, formats.data()));
+    // An sRGB format lets the blit apply the sRGB curve; UNORM would show
+    // linear values (too dark), so it is only the last resort.
+    const VkFormat preferred[] = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_A8B8G8R8_SRGB_PACK32};
+    VkSurfaceFormatKHR chosen{VK_FORMAT_UNDEFINED, VK_COLOR_SPACE_SRGB_NONLINEAR_KHR};
+    for (VkFormat want : preferred)
+        for (const VkSurfaceFormatKHR& f : formats)
+            if (chosen.format == VK_FORMAT_UNDEFINED && f.format == want &&
+                f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR &&
+                canBlit(ctx_.physical, f.format, VK_FORMAT_FEATURE_BLIT_DST_BIT))
+                chosen = f;
+    if (chosen.format == VK_FORMAT_UNDEFINED) {
+        for (const VkSurfaceFormatKHR& f : formats)
+            if (chosen.format == VK_FORMAT_UNDEFINED && canBlit(ctx_.physical, f.format, VK_FORMAT_FEATURE_BLIT_DST_BIT))
+                chosen = f;
+    }
+    if (chosen.format == VK_FORMAT_UNDEFINED)
+        throw gpu::GpuError("the window offers no swapchain format dvsgi can blit to", VK_ERROR_FORMAT_NOT_SUPPORTED);
+    if (!(caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
+        throw gpu::GpuError("the window's swapchain images cannot be transfer destinations",
+                            VK_ERROR_FEATURE_NOT_PRESENT);
+
+    std::vector<VkPresentModeKHR> modes;
+    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(ctx_.physical, surface_, &n, nullptr));
+    modes.resize(n);
+    VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(ctx_.physical, surface_, &n, modes.data()));
+    mode_ = VK_PRESENT_MODE_FIFO_KHR;  // always available
+    if (!vsync) {
+        for (VkPresentModeKHR m : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+            if (mode_ == VK_PRESENT_MODE_FIFO_KHR && std::find(modes.begin(), modes.end(), m) != modes.end())
+                mode_ = m;
+    }
+
+    if (caps.currentExtent.width != UINT32_MAX) {
+        extent_ = caps.currentExtent;
+    } else {
+        extent_.width = std::clamp(width, caps.minImageExtent.width, caps.maxImageExtent.width);
+        extent_.height = std::clamp(height, caps.minImageExtent.height, caps.maxImageExtent.height);
+    }
+    uint32_t count = std::max(caps.minImageCount + 1, 2u);
+    if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
+
+    VkSwapchainCreateInfoKHR ci{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+    ci.surface = surface_;
+    ci.minImageCount = count;
+    ci.imageFormat = chosen.format;
+    ci.imageColorSpace = chosen.colorSpace;
+    ci.imageExtent = extent_;
+    ci.imageArrayLayers = 1;
+    ci.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    ci.preTransform = (caps.supportedTransforms & VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR)
+                          ? VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR
+                          : caps.currentTransform;
+    ci.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
+                            ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+                            : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha & -caps.supportedCompositeAlpha);
+    ci.presentMode = mode_;
+    ci.clipped = VK_TRUE;
+    ci.oldSwapchain = swapchain_;
+    VkSwapchainKHR fresh = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSwapchainKHR(ctx_.device, &ci, nullptr, &fresh));
+    destroy();
+    swapchain_ = fresh;
+    format_ = chosen.format;
+    VK_CHECK(vkGetSwapchainImagesKHR(ctx_.device, swapchain_, &n, nullptr));
+    images_.resize(n);
+    VK_CHECK(vkGetSwapchainImagesKHR(ctx_.device, swapchain_, &n, images_.data()));
+}
+
+bool Swapchain::present(const gpu::Image& output) {
+    if (extent_.width == 0 || extent_.height == 0) return true;  // minimized
+    uint32_t index = 0;
+    // Acquire with a fence and wait for it: the copy below is then ordered
+    // after the presentation engine released the image without semaphores.
+    VkResult r = vkAcquireNextImageKHR(ctx_.device, swapchain_, UINT64_MAX, VK_NULL_HANDLE, acquireFence_, &index);
+    if (r == VK_ERROR_OUT_OF_DATE_KHR) return false;
+    if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR) gpu::throwVkError("vkAcquireNextImageKHR", r);
+    VK_CHECK(vkWaitForFences(ctx_.device, 1, &acquireFence_, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(ctx_.device, 1, &acquireFence_));
+    const bool suboptimal = r == VK_SUBOPTIMAL_KHR;
+
+    const VkImage target = images_[index];
+    const VkExtent3D src = output.desc().extent;
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        gpu::transition(cmd, output, gpu::use::ComputeWrite, gpu::use::TransferSrc);
+        swapImageBarrier(cmd, target, gpu::use::Undefined, gpu::use::TransferDst);
+        VkImageBlit blit{};
+        blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        blit.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
+        blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        blit.dstOffsets[1] = {int32_t(extent_.width), int32_t(extent_.height), 1};
+        vkCmdBlitImage(cmd, output.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+        swapImageBarrier(cmd, target, gpu::use::TransferDst, kPresent);
+        gpu::transition(cmd, output, gpu::use::TransferSrc, gpu::use::ComputeWrite);
+    });
+
+    VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    pi.swapchainCount = 1;
+    pi.pSwapchains = &swapchain_;
+    pi.pImageIndices = &index;
+    r = vkQueuePresentKHR(ctx_.queue, &pi);
+    if (r == VK_ERROR_OUT_OF_DATE_KHR) return false;
+    if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR) gpu::throwVkError("vkQueuePresentKHR", r);
+    return !(suboptimal || r == VK_SUBOPTIMAL_KHR);
+}
+
+}  // namespace dvsgi::app

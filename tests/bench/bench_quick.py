@@ -1,0 +1,79 @@
+#!/usr/bin/python3
+"""Smoke test of `dvsgi bench`: the quick suite runs, exits 0 and writes JSON
+with positive voxelization timings; a missing scene is skipped with a warning
+naming the file, never a crash.
+Usage: bench_quick.py path/to/dvsgi path/to/shared path/to/tmpdir"""
+import json, os, subprocess, sys
+
+DVSGI, SHARED, TMP = sys.argv[1], sys.argv[2], sys.argv[3]
+os.makedirs(TMP, exist_ok=True)
+passed = 0
+failed = []
+
+
+def check(name, ok, detail=""):
+    global passed
+    print("%-52s %s%s" % (name, "ok" if ok else "FAILED", "" if ok else "  " + detail))
+    if ok:
+        passed += 1
+    else:
+        failed.append(name)
+
+
+def run(args, timeout=240):
+    p = subprocess.run([DVSGI, "bench", *args], capture_output=True, text=True, timeout=timeout)
+    return p.returncode, p.stdout, p.stderr
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError) as e:
+        return {"_error": str(e)}
+
+
+# 1. The quick suite with the validation layer.
+out = os.path.join(TMP, "b.json")
+if os.path.exists(out):
+    os.remove(out)
+rc, stdout, stderr = run(["--bench-quick", "--bench-out", out, "--shared", SHARED, "--validate"])
+check("quick: exit code 0", rc == 0, "rc=%d stderr=%s" % (rc, stderr[-2000:]))
+check("quick: progress line on stderr", "[1/1] cornell 32^3" in stderr, stderr[-500:])
+check("quick: markdown table on stdout", "| voxelize static |" in stdout and "|---|" in stdout, stdout[-1000:])
+j = load(out)
+check("quick: JSON written", "_error" not in j, j.get("_error", ""))
+ms = j.get("measurements", [])
+check("quick: one measurement, status ok", len(ms) == 1 and ms[0].get("status") == "ok", json.dumps(ms)[:500])
+m = ms[0] if ms else {}
+passes = {p.get("name"): p for p in m.get("passes", [])}
+for name in ("voxelize static", "clear dynamic voxels", "voxelize dynamic"):
+    p = passes.get(name, {})
+    ok = (p.get("count") == 2 and len(p.get("samples_ms", [])) == 2 and p.get("min_ms", 0) > 0
+          and p["min_ms"] <= p["median_ms"] <= p["max_ms"])
+    check("quick: '%s' timed in both frames, > 0 ms" % name, ok, json.dumps(p)[:300])
+check("quick: frame GPU time > 0", m.get("frame_gpu", {}).get("median_ms", 0) > 0)
+tris = m.get("triangles", {})
+check("quick: static and dynamic triangles", tris.get("static", 0) > 0 and tris.get("dynamic", 0) > 0, str(tris))
+check("quick: 32^3 grid", m.get("voxel_grid", {}).get("n") == 32 and m.get("voxels") == 32, str(m.get("voxel_grid")))
+check("quick: GPU memory recorded", m.get("gpu_memory_bytes", 0) > 0)
+dev = j.get("device", {})
+check("quick: device and driver recorded", bool(dev.get("name")) and "driver_name" in dev, str(dev))
+check("quick: date and command line", bool(j.get("date")) and "--bench-quick" in j.get("command_line", ""))
+s = j.get("settings", {})
+check("quick: 160x90, 2 frames", s.get("width") == 160 and s.get("height") == 90 and s.get("frames") == 2, str(s))
+check("quick: no validation errors", j.get("validation_errors") == 0, str(j.get("validation_errors")))
+
+# 2. A shared folder without the scenes: skipped with a warning naming the file.
+out2 = os.path.join(TMP, "missing.json")
+missing = os.path.join(TMP, "no-shared-here")
+rc, stdout, stderr = run(["--bench-quick", "--bench-out", out2, "--shared", missing], timeout=120)
+check("missing scene: no crash, non-zero exit", rc > 0, "rc=%d" % rc)
+check("missing scene: warning names the file", "cornell-lights.gltf" in stderr and "warning" in stderr, stderr[-500:])
+j2 = load(out2)
+ms2 = j2.get("measurements", [])
+check("missing scene: recorded as skipped", len(ms2) == 1 and ms2[0].get("status") == "skipped"
+      and "cornell-lights.gltf" in ms2[0].get("error", ""), json.dumps(ms2)[:300])
+
+print("%d passed, %d failed" % (passed, len(failed)))
+sys.exit(1 if failed else 0)
