@@ -6,6 +6,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <string_view>
 #include <thread>
@@ -71,6 +72,7 @@ struct Measurement {
     std::string scene;
     std::string file;
     uint32_t voxels = 0;
+    std::string variant;  // "" = defaults; else what differs (Tables III and V)
     std::string status;  // "ok", "failed", "skipped"
     std::string error;
     uint32_t frames = 0;
@@ -242,6 +244,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
 
 nlohmann::json measurementJson(const Measurement& m) {
     nlohmann::json j = {{"scene", m.scene}, {"file", m.file}, {"voxels", m.voxels}, {"status", m.status}};
+    if (!m.variant.empty()) j["variant"] = m.variant;
     if (!m.error.empty()) j["error"] = m.error;
     if (m.status != "ok") return j;
     j["frames"] = m.frames;
@@ -287,7 +290,8 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
             if (std::find(rows.begin(), rows.end(), name) == rows.end()) rows.push_back(name);
 
     std::printf("\n%s\n\n| GPU ms: median (min-max) |", title.c_str());
-    for (const Measurement* m : cols) std::printf(" %s %u^3 |", m->scene.c_str(), m->voxels);
+    for (const Measurement* m : cols)
+        std::printf(" %s %u^3%s%s |", m->scene.c_str(), m->voxels, m->variant.empty() ? "" : " ", m->variant.c_str());
     std::printf("\n|---|");
     for (size_t i = 0; i < cols.size(); ++i) std::printf("---|");
     std::printf("\n");
@@ -306,6 +310,30 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
         row(name, [&](const Measurement& m) {
             const auto it = m.passes.samples.find(name);
             return it == m.passes.samples.end() ? std::string("-") : cell(it->second);
+        });
+    // The paper's Table IV from the same frames: the final gather with direct
+    // light only, with indirect light only, with both, and the dynamic update.
+    auto sumOf = [](const Measurement& m, std::initializer_list<const char*> names) {
+        double sum = 0.0;
+        for (const char* n : names) {
+            const auto it = m.passes.samples.find(n);
+            if (it != m.passes.samples.end()) sum += summarize(it->second).median;
+        }
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.2f", sum);
+        return std::string(buf);
+    };
+    row("Table IV: direct (gbuffer + direct lighting + composite)",
+        [&](const Measurement& m) { return sumOf(m, {"gbuffer", "direct lighting", "composite"}); });
+    row("Table IV: indirect (cone tracing + upsample)",
+        [&](const Measurement& m) { return sumOf(m, {"cone tracing", "upsample"}); });
+    row("Table IV: both", [&](const Measurement& m) {
+        return sumOf(m, {"gbuffer", "direct lighting", "cone tracing", "upsample", "composite"});
+    });
+    row("Table IV/VI: dynamic update (clear + voxelize dynamic + voxel light + filtering + bounce)",
+        [&](const Measurement& m) {
+            return sumOf(m, {"clear dynamic voxels", "voxelize dynamic", "voxel direct light", "voxel filtering",
+                             "voxel bounce", "voxel filtering (bounce)"});
         });
     row("**frame (GPU)**", [](const Measurement& m) { return cell(m.frameMs); });
     row("frame (wall)", [](const Measurement& m) { return cell(m.wallMs); });
@@ -411,7 +439,20 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
     };
     out["complete"] = false;
     std::vector<std::string> seenWarnings;
-    const size_t total = suite.size() * resolutions.size();
+    struct Variant {
+        std::string name;
+        std::function<void(RenderOptions&)> apply;
+    };
+    std::vector<Variant> variants = {{"", [](RenderOptions&) {}}};
+    if (o.benchTables) {
+        variants.push_back({"raycast occlusion", [](RenderOptions& r) { r.voxelOcclusion = "raycast"; }});
+        for (float a : {1.0f, 5.0f, 10.0f, 25.0f})
+            variants.push_back({"shadow cone " + std::to_string(int(a)) + " deg", [a](RenderOptions& r) {
+                                    r.shadows = "cone";
+                                    r.shadowAperture = a;
+                                }});
+    }
+    const size_t total = suite.size() * resolutions.size() * variants.size();
     size_t index = 0, ok = 0;
     uint32_t validationBefore = ctx.validationErrors();
     for (const BenchScene& bs : suite) {
@@ -439,23 +480,27 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
         uint64_t staticTris = 0, dynamicTris = 0;
         if (skipReason.empty()) countTriangles(scene, staticTris, dynamicTris);
 
-        for (uint32_t n : resolutions) {
+        for (uint32_t n : resolutions)
+        for (const Variant& variant : variants) {
             ++index;
             Measurement m;
             m.scene = bs.name;
             m.file = bs.path;
             m.voxels = n;
+            m.variant = variant.name;
+            const std::string label = bs.name + (variant.name.empty() ? "" : " (" + variant.name + ")");
             if (!skipReason.empty()) {
-                std::fprintf(stderr, "[%zu/%zu] %s %u^3 skipped\n", index, total, bs.name.c_str(), n);
+                std::fprintf(stderr, "[%zu/%zu] %s %u^3 skipped\n", index, total, label.c_str(), n);
                 m.status = "skipped";
                 m.error = skipReason;
                 results.push_back(std::move(m));
                 continue;
             }
-            std::fprintf(stderr, "[%zu/%zu] %s %u^3 ...\n", index, total, bs.name.c_str(), n);
+            std::fprintf(stderr, "[%zu/%zu] %s %u^3 ...\n", index, total, label.c_str(), n);
             std::fflush(stderr);
             RenderOptions mo = o;
             mo.voxels = n;
+            variant.apply(mo);
             m.staticTriangles = staticTris;
             m.dynamicTriangles = dynamicTris;
             const auto start = Clock::now();
@@ -466,7 +511,7 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
                 ++ok;
                 const auto vs = m.passes.samples.find("voxelize static");
                 std::fprintf(stderr, "[%zu/%zu] %s %u^3 done in %.1f s: voxelize static %.2f ms, frame %.2f ms (GPU medians)\n",
-                             index, total, bs.name.c_str(), n, msSince(start) / 1000.0,
+                             index, total, label.c_str(), n, msSince(start) / 1000.0,
                              vs == m.passes.samples.end() ? 0.0 : summarize(vs->second).median,
                              summarize(m.frameMs).median);
             } catch (const std::exception& e) {
@@ -475,7 +520,7 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
                 m.passes = {};
                 m.frameMs.clear();
                 m.wallMs.clear();
-                std::fprintf(stderr, "[%zu/%zu] %s %u^3 failed: %s\n", index, total, bs.name.c_str(), n, e.what());
+                std::fprintf(stderr, "[%zu/%zu] %s %u^3 failed: %s\n", index, total, label.c_str(), n, e.what());
             }
             const uint32_t validationNow = ctx.validationErrors();
             m.detail["validation_errors"] = validationNow - validationBefore;

@@ -9,6 +9,7 @@
 #include "image/image_io.h"
 #include "options.h"
 #include "render_command.h"
+#include "view_command.h"
 #include "scene/load.h"
 
 int main(int argc, char** argv) {
@@ -23,9 +24,7 @@ int main(int argc, char** argv) {
             case app::Command::Help: std::fputs(app::usageText().c_str(), stdout); return 0;
             case app::Command::Version: std::puts("dvsgi 0.1.0"); return 0;
             case app::Command::Render: return app::runRender(parsed.render);
-            case app::Command::View:
-                std::fprintf(stderr, "dvsgi: 'view' is not available in this build yet (issue #6)\n");
-                return 2;
+            case app::Command::View: return app::runView(parsed.render);
             case app::Command::Bench: return app::runBench(parsed.render, argc, argv);
         }
     } catch (const scene::LoadError& e) {

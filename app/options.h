@@ -80,6 +80,7 @@ struct RenderOptions {
     uint32_t benchWarmup = 2;     // frames rendered and discarded before those
     float benchMaxSeconds = 0.0f; // stop measuring a (scene, resolution) after this long; 0 = never
     bool benchQuick = false;      // Cornell box only, 32^3, 2 frames, 160x90
+    bool benchTables = false;     // also the variants of the paper's Tables III and V
 };
 
 struct ParseResult {

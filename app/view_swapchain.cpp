@@ -1,12 +1,19 @@
 #include "view_swapchain.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "gpu/barriers.h"
 #include "gpu/check.h"
 #include "gpu/context.h"
 #include "gpu/resources.h"
+
+namespace {
+const uint32_t kPresentComp[] = {
+#include "shaders/view_present.comp.inc"
+};
+}
 
 namespace dvsgi::app {
 
@@ -30,8 +37,6 @@ void swapImageBarrier(VkCommandBuffer cmd, VkImage image, const gpu::ImageUse& f
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-constexpr gpu::ImageUse kPresent{VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE};
-
 bool canBlit(VkPhysicalDevice pd, VkFormat f, VkFormatFeatureFlags need) {
     VkFormatProperties p;
     vkGetPhysicalDeviceFormatProperties(pd, f, &p);
@@ -48,6 +53,12 @@ Swapchain::Swapchain(const gpu::Context& ctx, VkSurfaceKHR surface) : ctx_(ctx),
                             VK_ERROR_FEATURE_NOT_PRESENT);
     if (!canBlit(ctx.physical, VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_FEATURE_BLIT_SRC_BIT))
         throw gpu::GpuError(ctx.deviceName + " cannot blit from RGBA32F images", VK_ERROR_FORMAT_NOT_SUPPORTED);
+    gpu::LayoutDesc layout;
+    layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+                       {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}};
+    layout.pushConstantBytes = 16;
+    layout.pushConstantStages = VK_SHADER_STAGE_COMPUTE_BIT;
+    toneMap_ = gpu::Pipeline(ctx, gpu::Spirv(kPresentComp), layout, "view tone map");
     VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_CHECK(vkCreateFence(ctx.device, &fi, nullptr, &acquireFence_));
 }
@@ -55,12 +66,17 @@ Swapchain::Swapchain(const gpu::Context& ctx, VkSurfaceKHR surface) : ctx_(ctx),
 Swapchain::~Swapchain() {
     vkDeviceWaitIdle(ctx_.device);
     destroy();
+    if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
+    if (renderPass_) vkDestroyRenderPass(ctx_.device, renderPass_, nullptr);
     if (acquireFence_) vkDestroyFence(ctx_.device, acquireFence_, nullptr);
 }
 
+// The per-image objects; the swapchain itself is retired by create().
 void Swapchain::destroy() {
-    if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
-    swapchain_ = VK_NULL_HANDLE;
+    for (VkFramebuffer f : framebuffers_) vkDestroyFramebuffer(ctx_.device, f, nullptr);
+    for (VkImageView v : views_) vkDestroyImageView(ctx_.device, v, nullptr);
+    framebuffers_.clear();
+    views_.clear();
     images_.clear();
 }
 
@@ -94,7 +110,8 @@ void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
                 chosen = f;
     if (chosen.format == VK_FORMAT_UNDEFINED) {
         for (const VkSurfaceFormatKHR& f : formats)
-            if (chosen.format == VK_FORMAT_UNDEFINED && canBlit(ctx_.physical, f.format, VK_FORMAT_FEATURE_BLIT_DST_BIT))
+            if (chosen.format == VK_FORMAT_UNDEFINED &&
+                canBlit(ctx_.physical, f.format, VK_FORMAT_FEATURE_BLIT_DST_BIT))
                 chosen = f;
     }
     if (chosen.format == VK_FORMAT_UNDEFINED)
@@ -130,7 +147,7 @@ void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
     ci.imageColorSpace = chosen.colorSpace;
     ci.imageExtent = extent_;
     ci.imageArrayLayers = 1;
-    ci.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    ci.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
     ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     ci.preTransform = (caps.supportedTransforms & VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR)
                           ? VK_SURFACE_TRANSFORM_IDENTITY_BIT_KHR
@@ -144,14 +161,70 @@ void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
     VkSwapchainKHR fresh = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSwapchainKHR(ctx_.device, &ci, nullptr, &fresh));
     destroy();
+    if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
     swapchain_ = fresh;
+    minImageCount_ = std::max(caps.minImageCount, 2u);
+    if (renderPass_ && format_ != chosen.format)
+        throw gpu::GpuError("the window's swapchain format changed", VK_ERROR_FORMAT_NOT_SUPPORTED);
     format_ = chosen.format;
     VK_CHECK(vkGetSwapchainImagesKHR(ctx_.device, swapchain_, &n, nullptr));
     images_.resize(n);
     VK_CHECK(vkGetSwapchainImagesKHR(ctx_.device, swapchain_, &n, images_.data()));
+
+    if (!renderPass_) {
+        VkAttachmentDescription a{};
+        a.format = format_;
+        a.samples = VK_SAMPLE_COUNT_1_BIT;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        a.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+        a.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        a.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+        VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        VkSubpassDescription sub{};
+        sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+        sub.colorAttachmentCount = 1;
+        sub.pColorAttachments = &ref;
+        VkSubpassDependency dep{};
+        dep.srcSubpass = VK_SUBPASS_EXTERNAL;
+        dep.dstSubpass = 0;
+        dep.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dep.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+        dep.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        dep.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        VkRenderPassCreateInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+        rp.attachmentCount = 1;
+        rp.pAttachments = &a;
+        rp.subpassCount = 1;
+        rp.pSubpasses = &sub;
+        rp.dependencyCount = 1;
+        rp.pDependencies = &dep;
+        VK_CHECK(vkCreateRenderPass(ctx_.device, &rp, nullptr, &renderPass_));
+    }
+    for (VkImage image : images_) {
+        VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        vi.image = image;
+        vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        vi.format = format_;
+        vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        VkImageView view = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateImageView(ctx_.device, &vi, nullptr, &view));
+        views_.push_back(view);
+        VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fi.renderPass = renderPass_;
+        fi.attachmentCount = 1;
+        fi.pAttachments = &view;
+        fi.width = extent_.width;
+        fi.height = extent_.height;
+        fi.layers = 1;
+        VkFramebuffer fb = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateFramebuffer(ctx_.device, &fi, nullptr, &fb));
+        framebuffers_.push_back(fb);
+    }
 }
 
-bool Swapchain::present(const gpu::Image& output) {
+bool Swapchain::present(const gpu::Image& output, float exposureEV, const Overlay& overlay) {
     if (extent_.width == 0 || extent_.height == 0) return true;  // minimized
     uint32_t index = 0;
     // Acquire with a fence and wait for it: the copy below is then ordered
@@ -165,18 +238,45 @@ bool Swapchain::present(const gpu::Image& output) {
 
     const VkImage target = images_[index];
     const VkExtent3D src = output.desc().extent;
+    if (!display_ || display_.desc().extent.width != src.width || display_.desc().extent.height != src.height) {
+        gpu::ImageDesc d;
+        d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        d.extent = {src.width, src.height, 1};
+        d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        d.name = "view display";
+        display_ = gpu::Image(ctx_, d);
+    }
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-        gpu::transition(cmd, output, gpu::use::ComputeWrite, gpu::use::TransferSrc);
+        // The renderer's compute writes to `output` are complete (its frame
+        // was waited for); read it in place, GENERAL layout, as storage.
+        gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+        gpu::transition(cmd, display_, gpu::use::Undefined, gpu::use::ComputeWrite);
+        gpu::bind(cmd, toneMap_);
+        gpu::Descriptors().storageImage(0, output.view()).storageImage(1, display_.view()).push(ctx_, cmd, toneMap_);
+        struct {
+            uint32_t w, h;
+            float scale, pad;
+        } push{src.width, src.height, std::exp2(exposureEV), 0.0f};
+        gpu::pushConstants(cmd, toneMap_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        vkCmdDispatch(cmd, gpu::groupCount(src.width, 8), gpu::groupCount(src.height, 8), 1);
+        gpu::transition(cmd, display_, gpu::use::ComputeWrite, gpu::use::TransferSrc);
         swapImageBarrier(cmd, target, gpu::use::Undefined, gpu::use::TransferDst);
         VkImageBlit blit{};
         blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         blit.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
         blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         blit.dstOffsets[1] = {int32_t(extent_.width), int32_t(extent_.height), 1};
-        vkCmdBlitImage(cmd, output.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+        vkCmdBlitImage(cmd, display_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
-        swapImageBarrier(cmd, target, gpu::use::TransferDst, kPresent);
-        gpu::transition(cmd, output, gpu::use::TransferSrc, gpu::use::ComputeWrite);
+        swapImageBarrier(cmd, target, gpu::use::TransferDst, gpu::use::ColorAttachment);
+        // The render pass leaves the image in PRESENT_SRC, with or without an overlay.
+        VkRenderPassBeginInfo rb{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        rb.renderPass = renderPass_;
+        rb.framebuffer = framebuffers_[index];
+        rb.renderArea.extent = extent_;
+        vkCmdBeginRenderPass(cmd, &rb, VK_SUBPASS_CONTENTS_INLINE);
+        if (overlay) overlay(cmd);
+        vkCmdEndRenderPass(cmd);
     });
 
     VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};

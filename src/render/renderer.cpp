@@ -207,6 +207,8 @@ FrameStats Renderer::renderFrame() {
     return stats;
 }
 
+const gpu::Image& Renderer::outputImage() const { return composite_->output; }
+
 image::ImageRGBA32F Renderer::readOutput() const {
     const std::vector<uint8_t> bytes = gpu::readbackImage(ctx_, composite_->output, gpu::use::ComputeWrite);
     image::ImageRGBA32F img;

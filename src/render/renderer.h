@@ -20,6 +20,7 @@
 namespace dvsgi::gpu {
 class Context;
 class Buffer;
+class Image;
 }
 
 namespace dvsgi::render {
@@ -95,6 +96,11 @@ public:
     const vxgi::InjectPass* injectPass() const { return inject_.get(); }
     const vxgi::BouncePass* bouncePass() const { return bounce_.get(); }
     image::ImageRGBA32F readOutput() const;    // linear radiance, output size
+    // The RGBA32F output image (linear radiance, output size) that renderFrame()
+    // leaves in gpu::use::ComputeWrite. For presentation (dvsgi view): a user
+    // may read it after renderFrame() returns and must leave it in
+    // gpu::use::ComputeWrite again.
+    const gpu::Image& outputImage() const;
     std::vector<MemoryItem> memory() const;
     const scene::PlacedCamera& camera() const { return camera_; }
     const std::vector<std::string>& warnings() const { return warnings_; }

@@ -1,0 +1,312 @@
+#include "view_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+#include "gpu/check.h"
+#include "gpu/context.h"
+#include "render/renderer.h"
+#include "scene/scene.h"
+#include "view_swapchain.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::app {
+
+namespace {
+
+void checkVk(VkResult r) {
+    if (r != VK_SUCCESS) gpu::throwVkError("ImGui Vulkan backend", r);
+}
+
+// A combo over fixed string values; true when the choice changed.
+bool comboString(const char* label, std::string& value, std::initializer_list<const char*> choices) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value.c_str())) {
+        for (const char* c : choices) {
+            const bool selected = value == c;
+            if (ImGui::Selectable(c, selected) && !selected) {
+                value = c;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+// Sliders rebuild the renderer when released, not on every drag step.
+bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
+
+bool sliderU(const char* label, uint32_t& v, int lo, int hi) {
+    int i = int(v);
+    ImGui::SliderInt(label, &i, lo, hi);
+    v = uint32_t(i);
+    return released();
+}
+
+bool sliderF(const char* label, float& v, float lo, float hi, const char* fmt = "%.3f") {
+    ImGui::SliderFloat(label, &v, lo, hi, fmt);
+    return released();
+}
+
+bool powerOfTwo(const char* label, uint32_t& v, std::initializer_list<uint32_t> choices) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, std::to_string(v).c_str())) {
+        for (uint32_t c : choices)
+            if (ImGui::Selectable(std::to_string(c).c_str(), c == v) && c != v) {
+                v = c;
+                changed = true;
+            }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+bool onOff(const char* label, bool& v) { return ImGui::Checkbox(label, &v); }
+
+// Direction of a node's -Z as yaw/pitch in degrees (yaw 0 = -Z, about +Y).
+glm::vec2 yawPitch(const glm::quat& q) {
+    const glm::vec3 f = glm::normalize(q * glm::vec3(0, 0, -1));
+    return glm::degrees(glm::vec2(std::atan2(f.x, -f.z), std::asin(std::clamp(f.y, -1.0f, 1.0f))));
+}
+
+glm::quat fromYawPitch(glm::vec2 deg) {
+    const glm::vec2 r = glm::radians(deg);
+    return glm::angleAxis(-r.x, glm::vec3(0, 1, 0)) * glm::angleAxis(r.y, glm::vec3(1, 0, 0));
+}
+
+const char* kViewModes[] = {"final", "voxels:albedo", "voxels:normal", "voxels:emission", "voxels:radiance",
+                            "voxels:directional"};
+
+}  // namespace
+
+ViewPanel::ViewPanel(const gpu::Context& ctx, GLFWwindow* window, const Swapchain& swapchain) : ctx_(ctx) {
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};
+    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pi.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+    pi.maxSets = 16;
+    pi.poolSizeCount = 1;
+    pi.pPoolSizes = &size;
+    VK_CHECK(vkCreateDescriptorPool(ctx.device, &pi, nullptr, &pool_));
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = ctx.instance;
+    info.PhysicalDevice = ctx.physical;
+    info.Device = ctx.device;
+    info.QueueFamily = ctx.queueFamily;
+    info.Queue = ctx.queue;
+    info.DescriptorPool = pool_;
+    info.MinImageCount = std::max(swapchain.minImageCount(), 2u);
+    info.ImageCount = std::max(swapchain.imageCount(), info.MinImageCount);
+    info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    info.CheckVkResultFn = checkVk;
+    ImGui_ImplVulkan_Init(&info, swapchain.renderPass());
+    ctx.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+ViewPanel::~ViewPanel() {
+    vkDeviceWaitIdle(ctx_.device);
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    vkDestroyDescriptorPool(ctx_.device, pool_, nullptr);
+}
+
+bool ViewPanel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool ViewPanel::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+
+ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer, const render::FrameStats& stats,
+                                    double frameMs, float& flySpeed, const char* presentMode) {
+    Actions a;
+    frameMs_.push_back(float(frameMs));
+    gpuMs_.push_back(float(stats.gpuMs));
+    if (frameMs_.size() > 240) frameMs_.erase(frameMs_.begin());
+    if (gpuMs_.size() > 240) gpuMs_.erase(gpuMs_.begin());
+
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(380, 560), ImGuiCond_FirstUseEver);
+    // Small windows start with the panel collapsed (click its title to open it).
+    ImGui::SetNextWindowCollapsed(ImGui::GetIO().DisplaySize.x < 480.0f, ImGuiCond_FirstUseEver);
+    ImGui::Begin("dvsgi");
+    ImGui::Text("%.1f ms/frame, GPU %.1f ms, %s", frameMs, stats.gpuMs, presentMode);
+    if (ImGui::Button("Screenshot (EXR + PNG)")) a.screenshot = true;
+
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+        scene::Scene& s = renderer.scene();
+        const size_t cameras = scene::placedCameras(s, scene::worldMatrices(s)).size();
+        int cam = o.camera;
+        if (ImGui::SliderInt("camera", &cam, 0, int(std::max<size_t>(cameras, 1) - 1)) && cam != o.camera)
+            a.camera = cam;
+        bool vsync = o.vsync;
+        if (ImGui::Checkbox("vsync", &vsync)) {
+            o.vsync = vsync;
+            a.recreateSwapchain = true;
+        }
+        ImGui::SliderFloat("fly speed (m/s)", &flySpeed, 0.01f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+        ImGui::SliderFloat("exposure (EV)", &o.exposure, -10.0f, 10.0f, "%.1f");
+    }
+
+    if (ImGui::CollapsingHeader("Renderer")) {
+        bool r = false;
+        r |= powerOfTwo("shadow map", o.shadowMapSize, {256, 512, 1024, 2048, 4096});
+        r |= sliderU("supersample", o.supersample, 1, 4);
+        r |= powerOfTwo("voxels", o.voxels, {0, 32, 64, 128, 256, 512});
+        if (ImGui::Checkbox("voxel box (else scene bounds)", &o.hasVoxelBox)) {
+            const vxgi::VoxelVolumes* v = renderer.volumes();
+            if (o.hasVoxelBox && v && !(o.voxelBox[0] < o.voxelBox[3])) {  // start from the current grid
+                const glm::vec3 lo = v->grid.origin, hi = lo + v->grid.voxelSize * float(v->grid.n);
+                for (int i = 0; i < 3; ++i) {
+                    o.voxelBox[i] = lo[i];
+                    o.voxelBox[i + 3] = hi[i];
+                }
+            }
+            r = true;
+        }
+        if (o.hasVoxelBox) {
+            ImGui::DragFloat3("box min", o.voxelBox, 0.01f);
+            r |= released();
+            ImGui::DragFloat3("box max", o.voxelBox + 3, 0.01f);
+            r |= released();
+        }
+        // An empty box cannot hold a grid: wait until min < max on every axis.
+        const bool boxOk = !o.hasVoxelBox || (o.voxelBox[0] < o.voxelBox[3] && o.voxelBox[1] < o.voxelBox[4] &&
+                                               o.voxelBox[2] < o.voxelBox[5]);
+        bool hw = o.hardwareConservative;
+        if (ImGui::Checkbox("hardware conservative raster", &hw)) {
+            o.hardwareConservative = hw;
+            r = true;
+        }
+        int view = int(o.view);
+        if (ImGui::Combo("view", &view, kViewModes, 6)) {
+            o.view = ViewKind(view);
+            r = true;
+        }
+        r |= sliderU("view mip", o.viewMip, 0, 8);
+        r |= sliderU("view direction", o.viewDirection, 0, 5);
+        r |= sliderU("bounces", o.bounces, 0, 16);
+        r |= onOff("normal-weighted", o.normalWeighted);
+        r |= comboString("voxel occlusion", o.voxelOcclusion, {"per-light", "shadowmap", "raycast", "soft", "none"});
+        r |= sliderF("soft kappa", o.softKappa, 0.0f, 4.0f);
+        bool sixteen = o.cones == 16;
+        if (ImGui::Checkbox("16 cones (off: 6)", &sixteen)) {
+            o.cones = sixteen ? 16 : 6;
+            r = true;
+        }
+        r |= sliderF("cone step", o.coneStep, 0.05f, 4.0f);
+        r |= sliderF("cone min step", o.coneMinStep, 0.05f, 4.0f);
+        r |= sliderF("max distance (m)", o.maxDistance, 0.0f, 100.0f);
+        r |= sliderF("cone offset (voxels)", o.coneOffset, 0.0f, 8.0f);
+        r |= onOff("specular", o.specular);
+        r |= sliderF("min specular angle", o.minSpecularAngle, 0.0f, 45.0f);
+        r |= sliderF("ao lambda", o.aoLambda, 0.0f, 4.0f);
+        r |= onOff("ao", o.ao);
+        r |= comboString("shadows", o.shadows, {"map", "cone"});
+        r |= sliderF("shadow aperture", o.shadowAperture, 0.5f, 45.0f);
+        r |= sliderF("trace scale", o.traceScale, 0.125f, 1.0f);
+        r |= comboString("output", o.output, {"full", "direct", "indirect", "specular", "ao", "shadow"});
+        ImGui::SliderFloat("time step (s)", &o.timeStep, 0.0f, 0.5f);
+        a.rebuildRenderer |= r && boxOk;
+    }
+
+    scene::Scene& s = renderer.scene();
+    if (ImGui::CollapsingHeader("Lights")) {
+        for (size_t i = 0; i < s.nodes.size(); ++i) {
+            scene::Node& n = s.nodes[i];
+            if (n.light < 0 || size_t(n.light) >= s.lights.size()) continue;
+            scene::Light& l = s.lights[size_t(n.light)];
+            ImGui::PushID(int(i));
+            if (ImGui::TreeNode("light", "%s", l.name.empty() ? n.name.c_str() : l.name.c_str())) {
+                a.sceneEdited |= ImGui::ColorEdit3("colour", &l.color.x);
+                a.sceneEdited |= ImGui::DragFloat("intensity", &l.intensity, 0.05f, 0.0f, 1e6f);
+                if (l.type != scene::LightType::Directional)
+                    a.sceneEdited |= ImGui::DragFloat3("position", &n.translation.x, 0.01f);
+                // Its voxel occlusion mode (--light-occlusion NAME=MODE): rebuilds the renderer.
+                if (!l.name.empty()) {
+                    auto it = std::find_if(o.lightOcclusion.begin(), o.lightOcclusion.end(),
+                                           [&](const auto& e) { return e.first == l.name; });
+                    std::string mode = it == o.lightOcclusion.end() ? "shadowmap" : it->second;
+                    if (comboString("voxel occlusion", mode, {"shadowmap", "raycast", "soft", "none"})) {
+                        if (it == o.lightOcclusion.end())
+                            o.lightOcclusion.emplace_back(l.name, mode);
+                        else
+                            it->second = mode;
+                        a.rebuildRenderer = true;
+                    }
+                }
+                if (l.type != scene::LightType::Point) {
+                    glm::vec2 yp = yawPitch(n.rotation);
+                    if (ImGui::DragFloat2("direction yaw/pitch", &yp.x, 0.5f, -180.0f, 180.0f)) {
+                        n.rotation = fromYawPitch(yp);
+                        a.sceneEdited = true;
+                    }
+                }
+                ImGui::TreePop();
+            }
+            ImGui::PopID();
+        }
+    }
+    if (ImGui::CollapsingHeader("Dynamic objects")) {
+        for (size_t i = 0; i < s.nodes.size(); ++i) {
+            scene::Node& n = s.nodes[i];
+            if (!n.dynamic) continue;
+            ImGui::PushID(int(i) + 100000);
+            a.sceneEdited |= ImGui::DragFloat3(n.name.empty() ? "node" : n.name.c_str(), &n.translation.x, 0.01f);
+            ImGui::PopID();
+        }
+    }
+
+    if (ImGui::CollapsingHeader("GPU timings", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            for (const gpu::TimerResult& r : stats.passes) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(r.name.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%8.3f ms", r.ms);
+            }
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted("frame total");
+            ImGui::TableNextColumn();
+            ImGui::Text("%8.3f ms", stats.gpuMs);
+            ImGui::EndTable();
+        }
+        const float maxMs = std::max(1.0f, *std::max_element(frameMs_.begin(), frameMs_.end()));
+        ImGui::PlotLines("frame ms", frameMs_.data(), int(frameMs_.size()), 0, nullptr, 0.0f, maxMs, ImVec2(0, 50));
+        ImGui::PlotLines("GPU ms", gpuMs_.data(), int(gpuMs_.size()), 0, nullptr, 0.0f, maxMs, ImVec2(0, 50));
+    }
+    if (ImGui::CollapsingHeader("GPU memory")) {
+        uint64_t total = 0;
+        for (const render::MemoryItem& m : renderer.memory()) {
+            ImGui::Text("%-22s %9.2f MiB", m.name.c_str(), double(m.bytes) / 1048576.0);
+            total += m.bytes;
+        }
+        ImGui::Text("%-22s %9.2f MiB", "total", double(total) / 1048576.0);
+    }
+    ImGui::End();
+    ImGui::Render();
+    return a;
+}
+
+void ViewPanel::record(VkCommandBuffer cmd) { ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd); }
+
+}  // namespace dvsgi::app

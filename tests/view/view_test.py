@@ -1,0 +1,394 @@
+#!/usr/bin/python3
+"""`dvsgi view` under Xvfb (issue #6): opens the window on the default scene,
+renders a few frames, writes a screenshot through the application, compares it
+with a headless `dvsgi render` of the same view, and checks a clean exit with
+zero validation errors. Without a display the command must say so in one line.
+Skips the window checks (prints 'skipped') when Xvfb is not installed.
+Usage: view_test.py path/to/dvsgi"""
+import ctypes, ctypes.util, os, shutil, struct, subprocess, sys, tempfile, time, zlib
+
+DVSGI = sys.argv[1]
+TMP = tempfile.mkdtemp(prefix="dvsgi-view-")
+passed, failed = 0, []
+
+
+def check(name, ok, detail=""):
+    global passed
+    print("%-48s %s" % (name, "ok" if ok else "FAILED: " + detail))
+    if ok:
+        passed += 1
+    else:
+        failed.append(name + (": " + detail if detail else ""))
+
+
+def read_exr(path):
+    """Minimal reader for the EXR files dvsgi writes: single-part scanline,
+    FLOAT channels, NO or ZIP compression. Returns (w, h, {channel: [floats]})."""
+    data = open(path, "rb").read()
+    assert struct.unpack_from("<I", data, 0)[0] == 20000630, "not an EXR file"
+    pos, attrs = 8, {}
+    while data[pos] != 0:
+        end = data.index(b"\0", pos)
+        name = data[pos:end].decode()
+        end2 = data.index(b"\0", end + 1)
+        size = struct.unpack_from("<i", data, end2 + 1)[0]
+        attrs[name] = data[end2 + 5:end2 + 5 + size]
+        pos = end2 + 5 + size
+    pos += 1
+    chl, channels = attrs["channels"], []
+    p = 0
+    while chl[p] != 0:
+        e = chl.index(b"\0", p)
+        ptype = struct.unpack_from("<i", chl, e + 1)[0]
+        assert ptype == 2, "only FLOAT channels"
+        channels.append(chl[p:e].decode())
+        p = e + 17
+    comp = attrs["compression"][0]
+    assert comp in (0, 2, 3), "compression %d" % comp
+    x0, y0, x1, y1 = struct.unpack("<4i", attrs["dataWindow"])
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    lines = {0: 1, 2: 1, 3: 16}[comp]
+    chunks = (h + lines - 1) // lines
+    offsets = struct.unpack_from("<%dQ" % chunks, data, pos)
+    out = {c: [0.0] * (w * h) for c in channels}
+    for off in offsets:
+        y, size = struct.unpack_from("<ii", data, off)
+        raw = data[off + 8:off + 8 + size]
+        n = min(lines, y1 + 1 - y)
+        expected = n * w * 4 * len(channels)
+        if size < expected:
+            t = bytearray(zlib.decompress(raw))
+            for i in range(1, len(t)):
+                t[i] = (t[i - 1] + t[i] - 128) & 0xFF
+            half = (len(t) + 1) // 2
+            u = bytearray(len(t))
+            u[0::2], u[1::2] = t[:half], t[half:]
+            raw = bytes(u)
+        vals = struct.unpack("<%df" % (expected // 4), raw)
+        k = 0
+        for row in range(n):
+            for c in channels:
+                base = (y - y0 + row) * w
+                out[c][base:base + w] = vals[k:k + w]
+                k += w
+    return w, h, out
+
+
+class X11:
+    """Just enough of libX11 (ctypes) to find, resize and read the viewer's window."""
+
+    def __init__(self, display):
+        lib = ctypes.util.find_library("X11")
+        if not lib:
+            raise OSError("libX11 not found")
+        X = self.X = ctypes.CDLL(lib)
+        vp, ul = ctypes.c_void_p, ctypes.c_ulong
+        X.XOpenDisplay.restype = vp
+        X.XOpenDisplay.argtypes = [ctypes.c_char_p]
+        X.XDefaultRootWindow.restype = ul
+        X.XDefaultRootWindow.argtypes = [vp]
+        X.XQueryTree.argtypes = [vp, ul, ctypes.POINTER(ul), ctypes.POINTER(ul),
+                                 ctypes.POINTER(ctypes.POINTER(ul)), ctypes.POINTER(ctypes.c_uint)]
+        X.XGetGeometry.argtypes = [vp, ul, ctypes.POINTER(ul)] + [ctypes.POINTER(ctypes.c_int)] * 2 + \
+            [ctypes.POINTER(ctypes.c_uint)] * 4
+        X.XResizeWindow.argtypes = [vp, ul, ctypes.c_uint, ctypes.c_uint]
+        X.XFlush.argtypes = [vp]
+        X.XGetImage.restype = vp
+        X.XGetImage.argtypes = [vp, ul, ctypes.c_int, ctypes.c_int, ctypes.c_uint, ctypes.c_uint, ul, ctypes.c_int]
+        X.XGetPixel.restype = ul
+        X.XGetPixel.argtypes = [vp, ctypes.c_int, ctypes.c_int]
+        X.XCloseDisplay.argtypes = [vp]
+        X.XInternAtom.restype = ul
+        X.XInternAtom.argtypes = [vp, ctypes.c_char_p, ctypes.c_int]
+        X.XSendEvent.argtypes = [vp, ul, ctypes.c_int, ctypes.c_long, ctypes.c_void_p]
+        self.d = X.XOpenDisplay(display.encode())
+        if not self.d:
+            raise OSError("cannot open " + display)
+
+    def windows(self):
+        """(id, width, height) of the root's children larger than 1x1."""
+        X, ul = self.X, ctypes.c_ulong
+        r, p, ch, n = ul(), ul(), ctypes.POINTER(ul)(), ctypes.c_uint()
+        X.XQueryTree(self.d, X.XDefaultRootWindow(self.d), ctypes.byref(r), ctypes.byref(p), ctypes.byref(ch),
+                     ctypes.byref(n))
+        out = []
+        for i in range(n.value):
+            root, x, y = ul(), ctypes.c_int(), ctypes.c_int()
+            w, h, b, depth = ctypes.c_uint(), ctypes.c_uint(), ctypes.c_uint(), ctypes.c_uint()
+            X.XGetGeometry(self.d, ch[i], ctypes.byref(root), ctypes.byref(x), ctypes.byref(y), ctypes.byref(w),
+                           ctypes.byref(h), ctypes.byref(b), ctypes.byref(depth))
+            if w.value > 1 and h.value > 1:
+                out.append((ch[i], w.value, h.value))
+        return out
+
+    def resize(self, win, w, h):
+        self.X.XResizeWindow(self.d, win, w, h)
+        self.X.XFlush(self.d)
+
+    def pixels(self, win, w, h):
+        """Rows of (r, g, b) bytes of a 24-bit window."""
+        img = self.X.XGetImage(self.d, win, 0, 0, w, h, 0xFFFFFFFF, 2)  # ZPixmap
+        rows = []
+        for y in range(h):
+            row = []
+            for x in range(w):
+                v = self.X.XGetPixel(img, x, y)
+                row.append(((v >> 16) & 255, (v >> 8) & 255, v & 255))
+            rows.append(row)
+        return rows
+
+    def key(self, win, name, press):
+        """A synthetic KeyPress/KeyRelease of the key with keysym `name` (e.g. b"w")."""
+        class KeyEvent(ctypes.Structure):
+            _fields_ = [("type", ctypes.c_int), ("serial", ctypes.c_ulong), ("send_event", ctypes.c_int),
+                        ("display", ctypes.c_void_p), ("window", ctypes.c_ulong), ("root", ctypes.c_ulong),
+                        ("subwindow", ctypes.c_ulong), ("time", ctypes.c_ulong), ("x", ctypes.c_int),
+                        ("y", ctypes.c_int), ("x_root", ctypes.c_int), ("y_root", ctypes.c_int),
+                        ("state", ctypes.c_uint), ("keycode", ctypes.c_uint), ("same_screen", ctypes.c_int),
+                        ("pad", ctypes.c_long * 24)]
+        X = self.X
+        X.XStringToKeysym.restype = ctypes.c_ulong
+        X.XStringToKeysym.argtypes = [ctypes.c_char_p]
+        X.XKeysymToKeycode.restype = ctypes.c_ubyte
+        X.XKeysymToKeycode.argtypes = [ctypes.c_void_p, ctypes.c_ulong]
+        e = KeyEvent()
+        e.type = 2 if press else 3  # KeyPress / KeyRelease
+        e.display = self.d
+        e.window = win
+        e.root = X.XDefaultRootWindow(self.d)
+        e.same_screen = 1
+        e.keycode = X.XKeysymToKeycode(self.d, X.XStringToKeysym(name))
+        X.XSendEvent(self.d, win, 1, 3, ctypes.byref(e))  # KeyPressMask | KeyReleaseMask
+        X.XFlush(self.d)
+
+    def request_close(self, win):
+        """What a window manager's close button sends: WM_DELETE_WINDOW."""
+        class ClientMessage(ctypes.Structure):
+            _fields_ = [("type", ctypes.c_int), ("serial", ctypes.c_ulong), ("send_event", ctypes.c_int),
+                        ("display", ctypes.c_void_p), ("window", ctypes.c_ulong), ("message_type", ctypes.c_ulong),
+                        ("format", ctypes.c_int), ("data", ctypes.c_long * 5), ("pad", ctypes.c_long * 24)]
+        e = ClientMessage()
+        e.type = 33  # ClientMessage
+        e.display = self.d
+        e.window = win
+        e.message_type = self.X.XInternAtom(self.d, b"WM_PROTOCOLS", 0)
+        e.format = 32
+        e.data[0] = self.X.XInternAtom(self.d, b"WM_DELETE_WINDOW", 0)
+        self.X.XSendEvent(self.d, win, 0, 0, ctypes.byref(e))
+        self.X.XFlush(self.d)
+
+    def close(self):
+        self.X.XCloseDisplay(self.d)
+
+
+def srgb_byte(v):
+    """image/image_io.h encodeSrgb8."""
+    if not v > 0.0:
+        return 0
+    v = min(v, 1.0)
+    s = 12.92 * v if v <= 0.0031308 else 1.055 * v ** (1 / 2.4) - 0.055
+    return int(round(255 * s))
+
+
+def window_difference(grabbed, expected):
+    """Mean |window - sRGB(expected)| in 8-bit levels, below the panel (collapsed,
+    top left, over the first rows)."""
+    w, h, ch = expected
+    total = count = 0
+    for y in range(40, h):
+        for x in range(w):
+            i = y * w + x
+            want = (srgb_byte(ch["R"][i]), srgb_byte(ch["G"][i]), srgb_byte(ch["B"][i]))
+            total += sum(abs(a - b) for a, b in zip(grabbed[y][x], want))
+            count += 3
+    return total / count
+
+
+def window_checks(display, env, common):
+    """Resize the window while it runs, read what it shows until it matches a
+    headless render at the new size (sRGB-encoded as the PNG preview), then
+    close it as a window manager would and check the clean exit."""
+    try:
+        x = X11(display)
+    except OSError as e:
+        print("window content checks skipped: %s" % e)
+        return
+    ref = os.path.join(TMP, "ref200.exr")
+    rc, _, err = run(["render", *common, "--width", "200", "--height", "150", "--quiet", "--out", ref], env)
+    check("headless render at 200x150", rc == 0, err[-500:])
+    if rc != 0:
+        return
+    expected = read_exr(ref)
+    shot = os.path.join(TMP, "resized.exr")
+    # No frame limit: the window runs until it is asked to close, as by a user.
+    proc = subprocess.Popen([DVSGI, "view", *common, "--quiet", "--screenshot", shot],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    best = None
+    try:
+        deadline, wins = time.time() + 60, []
+        while not wins and time.time() < deadline and proc.poll() is None:
+            wins = x.windows()
+            time.sleep(0.05)
+        check("view: window appears", bool(wins))
+        if wins:
+            win = wins[-1][0]
+            time.sleep(2.0)  # a few frames at the first size
+            x.resize(win, 200, 150)
+            deadline = time.time() + 60
+            while time.time() < deadline and proc.poll() is None:
+                time.sleep(0.5)  # the swapchain and the renderer follow the new size
+                d = window_difference(x.pixels(win, 200, 150), expected)
+                best = d if best is None else min(best, d)
+                if d < 2.0:
+                    break
+            x.request_close(win)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        x.close()
+    check("view closed by WM_DELETE_WINDOW after a resize: exit 0, no validation errors",
+          proc.returncode == 0 and validation_clean(proc.returncode, err), "rc=%s %s" % (proc.returncode, err[-1000:]))
+    print("mean |window - sRGB(headless 200x150)|: %s levels" % ("%.3f" % best if best is not None else "n/a"))
+    check("window shows the frame at the new size (< 2 levels)", best is not None and best < 2.0,
+          "best mean difference %s" % best)
+    if os.path.exists(shot):
+        d = mean_relative_difference(read_exr(shot), expected)
+        check("screenshot after the resize matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
+    else:
+        check("screenshot after the resize written", False)
+
+
+def interaction_check(display, env, common, name, keysym, what):
+    """Hold a key for a second in a running window; the screenshot must then
+    differ from the headless render of the unmoved scene (the camera or the
+    object moved), with a clean exit and no validation errors."""
+    try:
+        x = X11(display)
+    except OSError as e:
+        print("%s skipped: %s" % (name, e))
+        return
+    shot = os.path.join(TMP, keysym.decode() + ".exr")
+    proc = subprocess.Popen([DVSGI, "view", *common, "--quiet", "--screenshot", shot],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        deadline, wins = time.time() + 60, []
+        while not wins and time.time() < deadline and proc.poll() is None:
+            wins = x.windows()
+            time.sleep(0.05)
+        if wins:
+            win = wins[-1][0]
+            time.sleep(2.0)
+            x.key(win, keysym, True)
+            time.sleep(1.0)
+            x.key(win, keysym, False)
+            time.sleep(1.0)
+            x.request_close(win)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        x.close()
+    ok = proc.returncode == 0 and validation_clean(proc.returncode, err) and os.path.exists(shot)
+    d = mean_relative_difference(read_exr(shot), read_exr(os.path.join(TMP, "ref.exr"))) if ok else 0.0
+    print("%s: mean relative difference to the unmoved view %.4f" % (name, d))
+    check(name, ok and d > 0.02, "rc=%s diff=%.4f (%s) %s" % (proc.returncode, d, what, err[-500:]))
+
+
+def mean_relative_difference(a, b):
+    (wa, ha, ca), (wb, hb, cb) = a, b
+    if (wa, ha) != (wb, hb):
+        return float("inf")
+    num = den = 0.0
+    for c in ("R", "G", "B"):
+        for x, y in zip(ca[c], cb[c]):
+            num += abs(x - y)
+            den += abs(y)
+    return num / den if den > 0 else (0.0 if num == 0 else float("inf"))
+
+
+def run(args, env, timeout=300):
+    p = subprocess.run([DVSGI, *args], capture_output=True, text=True, timeout=timeout, env=env)
+    return p.returncode, p.stdout, p.stderr
+
+
+def validation_clean(rc, err):
+    return "[validation error]" not in err and "validation error(s)" not in err and rc != 3
+
+
+# 1. No display: one line, non-zero exit.
+env = dict(os.environ)
+env.pop("DISPLAY", None)
+env.pop("WAYLAND_DISPLAY", None)
+rc, out, err = run(["view", "--width", "64", "--height", "48"], env, timeout=60)
+lines = [l for l in err.splitlines() if l.strip()]
+check("no display: one line, exit non-zero",
+      rc != 0 and len(lines) == 1 and "view needs a display (DISPLAY is not set)" in lines[0],
+      "rc=%d stderr=%r" % (rc, err))
+
+# 2. The window under Xvfb.
+xvfb = shutil.which("Xvfb")
+if not xvfb:
+    print("window checks skipped: Xvfb is not installed (Debian package xvfb)")
+    print("skipped")
+else:
+    display = None
+    for n in range(99, 140):
+        if not os.path.exists("/tmp/.X%d-lock" % n) and not os.path.exists("/tmp/.X11-unix/X%d" % n):
+            display = n
+            break
+    server = subprocess.Popen([xvfb, ":%d" % display, "-screen", "0", "640x480x24", "-nolisten", "tcp"],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.time() + 15
+        while not os.path.exists("/tmp/.X11-unix/X%d" % display) and time.time() < deadline:
+            if server.poll() is not None:
+                break
+            time.sleep(0.1)
+        ok = server.poll() is None and os.path.exists("/tmp/.X11-unix/X%d" % display)
+        check("Xvfb :%d started" % display, ok)
+        if ok:
+            venv = dict(env)
+            venv["DISPLAY"] = ":%d" % display
+            common = ["--width", "160", "--height", "120", "--voxels", "32", "--validate"]
+            shot = os.path.join(TMP, "shot.exr")
+            rc, out, err = run(["view", *common, "--view-frames", "3", "--screenshot", shot], venv)
+            if "no viewer" in err:
+                print("window checks skipped: this dvsgi was built without GLFW")
+                print("skipped")
+            else:
+                sys.stdout.write(out)
+                check("view: exit 0", rc == 0, "rc=%d stderr=%r" % (rc, err[-2000:]))
+                check("view: zero validation errors", validation_clean(rc, err), err[-2000:])
+                check("view: rendered 3 frames", "view: 3 frame(s), 160x120" in out, out[-500:])
+                check("view: screenshot EXR and PNG written",
+                      os.path.exists(shot) and os.path.exists(os.path.join(TMP, "shot.png")))
+                ref = os.path.join(TMP, "ref.exr")
+                rc2, _, err2 = run(["render", *common, "--quiet", "--out", ref], env)
+                check("headless render of the same view", rc2 == 0 and validation_clean(rc2, err2),
+                      "rc=%d %s" % (rc2, err2[-1000:]))
+                if os.path.exists(shot) and os.path.exists(ref):
+                    d = mean_relative_difference(read_exr(shot), read_exr(ref))
+                    print("mean relative difference screenshot vs headless: %.6f" % d)
+                    check("screenshot matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
+                # Vsync off takes another present mode when the surface has one.
+                rc, out, err = run(["view", *common, "--view-frames", "2", "--vsync", "off", "--quiet"], venv)
+                check("view --vsync off: exit 0, no validation errors", rc == 0 and validation_clean(rc, err),
+                      "rc=%d %s" % (rc, err[-1000:]))
+                window_checks(":%d" % display, venv, common)
+                interaction_check(":%d" % display, venv, common, "fly camera: W moves the view", b"w",
+                                  "the camera should move forward")
+                interaction_check(":%d" % display, venv, common, "moving a light (arrow key) changes the frame",
+                                  b"Right", "the light should move and the frame be re-lit")
+    finally:
+        server.terminate()
+        try:
+            server.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            server.kill()
+
+shutil.rmtree(TMP, ignore_errors=True)
+print("%d passed, %d failed" % (passed, len(failed)))
+for f in failed:
+    print("FAILED: " + f)
+sys.exit(1 if failed else 0)
