@@ -8,6 +8,8 @@
 #include "gpu/check.h"
 #include "gpu/context.h"
 #include "gpu/resources.h"
+#include "shared/bindings.h"
+#include "shared/push.h"
 
 namespace {
 const uint32_t kPresentComp[] = {
@@ -16,6 +18,7 @@ const uint32_t kPresentComp[] = {
 }
 
 namespace dvsgi::app {
+namespace sh = dvsgi::shader;
 
 namespace {
 
@@ -54,9 +57,9 @@ Swapchain::Swapchain(const gpu::Context& ctx, VkSurfaceKHR surface) : ctx_(ctx),
     if (!canBlit(ctx.physical, VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_FEATURE_BLIT_SRC_BIT))
         throw gpu::GpuError(ctx.deviceName + " cannot blit from RGBA32F images", VK_ERROR_FORMAT_NOT_SUPPORTED);
     gpu::LayoutDesc layout;
-    layout.bindings = {{0, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
-                       {1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}};
-    layout.pushConstantBytes = 16;
+    layout.bindings = {{sh::BIND_PRESENT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT},
+                       {sh::BIND_PRESENT_DISPLAY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_COMPUTE_BIT}};
+    layout.pushConstantBytes = sizeof(sh::PresentPush);
     layout.pushConstantStages = VK_SHADER_STAGE_COMPUTE_BIT;
     toneMap_ = gpu::Pipeline(ctx, gpu::Spirv(kPresentComp), layout, "view tone map");
     VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -252,11 +255,10 @@ bool Swapchain::present(const gpu::Image& output, float exposureEV, const Overla
         gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
         gpu::transition(cmd, display_, gpu::use::Undefined, gpu::use::ComputeWrite);
         gpu::bind(cmd, toneMap_);
-        gpu::Descriptors().storageImage(0, output.view()).storageImage(1, display_.view()).push(ctx_, cmd, toneMap_);
-        struct {
-            uint32_t w, h;
-            float scale, pad;
-        } push{src.width, src.height, std::exp2(exposureEV), 0.0f};
+        gpu::Descriptors().storageImage(sh::BIND_PRESENT_RADIANCE, output.view())
+            .storageImage(sh::BIND_PRESENT_DISPLAY, display_.view())
+            .push(ctx_, cmd, toneMap_);
+        const sh::PresentPush push{glm::vec4(float(src.width), float(src.height), std::exp2(exposureEV), 0.0f)};
         gpu::pushConstants(cmd, toneMap_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(src.width, 8), gpu::groupCount(src.height, 8), 1);
         gpu::transition(cmd, display_, gpu::use::ComputeWrite, gpu::use::TransferSrc);

@@ -1,6 +1,6 @@
 // The window's Vulkan swapchain for `dvsgi view`: creation, recreation on
 // resize or vsync change, and presenting the renderer's output image: a small
-// compute pass scales it by 2^EV and clamps to [0, 1] (app/view_present.comp),
+// compute pass scales it by 2^EV and clamps to [0, 1] (shaders/view_present.comp),
 // then a blit into an sRGB swapchain image applies the sRGB curve, i.e. the
 // PNG preview's encoding.
 #pragma once

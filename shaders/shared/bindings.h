@@ -47,6 +47,10 @@ DVSGI_CONST(uint, BIND_UP_LOW_SPECULAR, 4);
 DVSGI_CONST(uint, BIND_UP_OUT_DIFFUSE, 5);
 DVSGI_CONST(uint, BIND_UP_OUT_SPECULAR, 6);
 
+// dvsgi view: the renderer's output tone-mapped into the image blitted to the window.
+DVSGI_CONST(uint, BIND_PRESENT_RADIANCE, 0);
+DVSGI_CONST(uint, BIND_PRESENT_DISPLAY, 1);
+
 DVSGI_END
 
 #endif

@@ -22,6 +22,11 @@ struct UpsamplePush {
 };
 DVSGI_CHECK_SIZE(UpsamplePush, 16);
 
+struct PresentPush {
+    vec4 params;  // x output width, y output height, z 2^EV (exposure scale)
+};
+DVSGI_CHECK_SIZE(PresentPush, 16);
+
 DVSGI_END
 
 #endif
