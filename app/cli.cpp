@@ -237,6 +237,10 @@ const std::vector<OptionSpec>& optionSpecs() {
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.coneOffset = parseFloat(opt, v, 0.0f, 16.0f, "voxels in 0..16");
          }},
+        {"--cone-clearance", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.coneClearance = parseFloat(opt, v, 0.0f, 8.0f, "a number in 0..8 (0 = off)");
+         }},
         {"--ao-lambda", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.aoLambda = parseFloat(opt, v, 0.0f, 1000.0f, "a number in 0..1000");
@@ -496,6 +500,9 @@ std::string usageText() {
            "  --cone-min-step S    smallest step in voxels (default 0.5)\n"
            "  --max-distance M     longest cone in metres (default 0 = the grid's diagonal)\n"
            "  --cone-offset V      cone origins move V voxels along the normal (default 2.5)\n"
+           "  --cone-clearance K   near a surface, sample mip cells no larger than (height\n"
+           "                       over it - 1 voxel) / K, so a cone does not read the surface\n"
+           "                       it leaves (default 3; 0 = the paper's plain diameter rule)\n"
            "  --specular on|off    one cone along the reflected view direction for glossy\n"
            "                       materials, tan(half-angle) = roughness^2 (default on)\n"
            "  --ao-lambda L        ambient occlusion falloff f(r) = 1/(1 + L r), r in voxels\n"

@@ -51,6 +51,7 @@ struct RenderOptions {
     float coneMinStep = 0.5f;        // voxels
     float maxDistance = 0.0f;        // metres, 0 = grid diagonal
     float coneOffset = 2.5f;         // origin offset along the normal, voxels
+    float coneClearance = 3.0f;      // K: sample cells at most (height over the surface - 1 voxel) / K
     float aoLambda = 0.5f;           // f(r) = 1/(1 + lambda r), r in voxels
     bool ao = false;                 // multiply indirect terms by AO in the composite
     bool specular = true;

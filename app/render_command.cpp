@@ -141,6 +141,7 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
                        {"cone_min_step_voxels", o.coneMinStep},
                        {"max_distance_m", o.maxDistance},
                        {"cone_offset_voxels", o.coneOffset},
+                       {"cone_clearance", o.coneClearance},
                        {"ao_lambda", o.aoLambda},
                        {"ao", o.ao},
                        {"specular", o.specular},
@@ -196,6 +197,8 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.gather.minStepVoxels = o.coneMinStep;
     rs.gather.maxDistance = o.maxDistance;
     rs.gather.normalOffsetVoxels = o.coneOffset;
+    rs.gather.clearance = o.coneClearance;
+    rs.voxelLight.bounceCone.surface.x = o.coneClearance;
     rs.gather.aoLambda = o.aoLambda;
     rs.gather.specular = o.specular;
     rs.gather.minSpecularDegrees = o.minSpecularAngle;
@@ -204,6 +207,7 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.shadowCones.apertureDegrees = o.shadowAperture;
     rs.shadowCones.normalOffsetVoxels = o.coneOffset;
     rs.shadowCones.cone.trace = glm::vec4(o.coneStep, o.coneMinStep, 0.0f, 1.0f);
+    rs.shadowCones.cone.surface.x = o.coneClearance;
     rs.applyAO = o.ao;
     static const char* terms[] = {"full", "direct", "indirect", "specular", "ao", "shadow"};
     for (uint32_t i = 0; i < 6; ++i)

@@ -215,6 +215,7 @@ ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer
         r |= sliderF("cone min step", o.coneMinStep, 0.05f, 4.0f);
         r |= sliderF("max distance (m)", o.maxDistance, 0.0f, 100.0f);
         r |= sliderF("cone offset (voxels)", o.coneOffset, 0.0f, 8.0f);
+        r |= sliderF("cone clearance K", o.coneClearance, 0.0f, 8.0f);
         r |= onOff("specular", o.specular);
         r |= sliderF("min specular angle", o.minSpecularAngle, 0.0f, 45.0f);
         r |= sliderF("ao lambda", o.aoLambda, 0.0f, 4.0f);

@@ -52,18 +52,19 @@ void main() {
     vec3 V = normalize(frame.cameraPos.xyz - P);
     float metallic = base.a, roughness = nr.w;
     // Offset along the normal so the surface does not sample its own voxels.
-    vec3 origin = P + N * (pc.params.z * grid.originSize.w);
+    float originHeight = pc.params.z * grid.originSize.w;
+    vec3 origin = P + N * originHeight;
 
     float occlusion;
-    vec3 E = pc.flags.x == CONE_SET_16 ? gatherIrradiance16(origin, N, pc.cone, pc.params.y, occlusion)
-                                       : gatherIrradiance6AO(origin, N, pc.cone, pc.params.y, occlusion);
+    vec3 E = pc.flags.x == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
+                                       : gatherIrradiance6AO(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
     vec3 diffuse = base.rgb / PI * E * (1.0 - metallic);
     imageStore(outDiffuse, px, vec4(diffuse, 1.0 - occlusion));
 
     vec3 specular = vec3(0.0);
     if (pc.flags.y != 0u && isGlossy(metallic, roughness)) {
         vec3 R = reflect(-V, N);
-        vec4 c = traceCone(origin, R, specularTanHalf(roughness), pc.cone);
+        vec4 c = traceCone(origin, N, originHeight, R, specularTanHalf(roughness), pc.cone);
         vec3 F0 = mix(vec3(0.04), base.rgb, metallic);
         float NoV = max(dot(N, V), 0.0);
         specular = (F0 + (1.0 - F0) * pow(1.0 - NoV, 5.0)) * c.rgb;

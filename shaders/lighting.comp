@@ -39,8 +39,9 @@ layout(push_constant) uniform Push { LightingPush pc; };
 float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     ConeParams p = pc.cone;
     p.trace.z = min(dist, 2.0 * grid.originSize.w * float(grid.dims.x));
-    vec3 origin = P + N * (pc.shadow.z * grid.originSize.w);
-    return 1.0 - traceCone(origin, L, pc.shadow.y, p).a;
+    float originHeight = pc.shadow.z * grid.originSize.w;
+    vec3 origin = P + N * originHeight;
+    return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p).a;
 }
 
 void main() {

@@ -17,13 +17,14 @@ vec4 sampleDirectional(vec3 uvw, vec3 dir, float level) {
 }
 
 // Front-to-back accumulation along the cone from `origin` (world) along unit
-// `dir`, half-angle tangent `tanHalf`. Returns premultiplied radiance (rgb,
+// `dir`, half-angle tangent `tanHalf`; `origin` lies `originHeight` (world)
+// above a surface of normal `n`. Returns premultiplied radiance (rgb,
 // W m^-2 sr^-1 as seen from the origin) and accumulated opacity (a).
 // params.trace: x step factor beta (step = beta * diameter), y minimum step in
 // voxels, z maximum distance in metres, w distance of the first sample in voxels.
 // `ao` receives the occlusion weighted by f(r) = 1 / (1 + aoLambda * r), r the
 // distance in voxels: occ += (1 - occ) * alpha * f(r) (ambient occlusion).
-vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float aoLambda, out float ao) {
+vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params, float aoLambda, out float ao) {
     float s = grid.originSize.w;
     float extent = s * float(grid.dims.x);
     float maxLevel = float(grid.dims.z) - 1.0;
@@ -32,7 +33,17 @@ vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float 
     float t = params.trace.w * s;
     float stepPrev = 0.0;
     for (int i = 0; i < 1024 && t < params.trace.z && acc.a < 0.995; ++i) {
-        float d = max(2.0 * t * tanHalf, s);  // diameter = 2 t tan(theta/2), at least a voxel
+        float dCone = max(2.0 * t * tanHalf, s);  // diameter = 2 t tan(theta/2), at least a voxel
+        float d = dCone;
+        // Clearance: a sample's trilinear footprint spans about one cell (of
+        // the diameter's size) on each side, so near the start a wide cone
+        // would read the cells of the surface it leaves (self-illumination,
+        // AO < 1 on an open plane). Keep the cell size below the height over
+        // that surface (minus its voxel thickness) divided by K.
+        if (params.surface.x > 0.0) {
+            float hs = originHeight + t * dot(dir, n);
+            d = clamp((hs - params.surface.y * s) / params.surface.x, s, d);
+        }
         float level = log2(d / s);
         vec3 uvw = (origin + dir * t - grid.originSize.xyz) / extent;
         // A step that leaves the grid ends with one sample on its boundary, so
@@ -48,8 +59,10 @@ vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float 
 #ifdef CONE_USE_RADIANCE_VOLUME
         if (level < 1.0) smp = mix(textureLod(radianceVolume, uvw, 0.0), smp, level);
 #endif
-        float stepLen = max(params.trace.x * d, params.trace.y * s);
-        // A sample's opacity stands for a slab one diameter thick: rescale it
+        // Steps follow the cone's diameter but never exceed the sampled cell,
+        // so a clamped (finer) footprint does not step over a thin wall.
+        float stepLen = max(min(params.trace.x * dCone, d), params.trace.y * s);
+        // A sample's opacity stands for a slab one cell thick: rescale it
         // to the step actually taken so results do not depend on beta.
         float a = clamp(smp.a, 0.0, 1.0);
         float ac = 1.0 - pow(1.0 - min(a, 0.9999), stepLen / d);
@@ -64,9 +77,9 @@ vec4 traceConeAO(vec3 origin, vec3 dir, float tanHalf, ConeParams params, float 
     return acc;
 }
 
-vec4 traceCone(vec3 origin, vec3 dir, float tanHalf, ConeParams params) {
+vec4 traceCone(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params) {
     float ao;
-    return traceConeAO(origin, dir, tanHalf, params, 0.0, ao);
+    return traceConeAO(origin, n, originHeight, dir, tanHalf, params, 0.0, ao);
 }
 
 // Cone sets over the hemisphere around n, cosine-weighted and normalized so a
@@ -81,19 +94,19 @@ void coneBasis(vec3 n, out vec3 t, out vec3 b) {
 }
 
 // The paper's six 60-degree cones: one along n, five at 60 degrees from it.
-vec3 gatherIrradiance6(vec3 origin, vec3 n, ConeParams params, out float occlusion) {
+vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams params, out float occlusion) {
     vec3 t, b;
     coneBasis(n, t, b);
     const float sin60 = 0.8660254, cos60 = 0.5;
     // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
     const float wCenter = 3.14159265 / 3.5, wSide = 3.14159265 * 0.5 / 3.5;
-    vec4 c = traceCone(origin, n, TAN_30, params);
+    vec4 c = traceCone(origin, n, originHeight, n, TAN_30, params);
     vec3 E = wCenter * c.rgb;
     occlusion = wCenter * c.a;
     for (int i = 0; i < 5; ++i) {
         float phi = 6.28318531 * float(i) / 5.0;
         vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
-        vec4 s = traceCone(origin, dir, TAN_30, params);
+        vec4 s = traceCone(origin, n, originHeight, dir, TAN_30, params);
         E += wSide * s.rgb;
         occlusion += wSide * s.a;
     }

@@ -17,7 +17,7 @@ struct GatherPush {
                       // z origin offset along the normal (voxels), w minimum specular half-angle tangent
     uvec4 flags;      // x cone set (6/16), y specular on, z trace width, w trace height
 };
-DVSGI_CHECK_SIZE(GatherPush, 48);
+DVSGI_CHECK_SIZE(GatherPush, 64);
 
 DVSGI_CONST(uint, BIND_GATHER_FRAME, 3);
 DVSGI_CONST(uint, BIND_GATHER_BASE, 4);

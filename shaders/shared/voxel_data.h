@@ -97,14 +97,19 @@ DVSGI_CHECK_SIZE(AnisoPush, 16);
 // Cone tracing through the filtered volumes (shared by the voxel bounce and
 // the per-pixel gather).
 struct ConeParams {
-    vec4 trace;  // x step factor beta, y minimum step (voxels), z maximum distance (m), w origin offset (voxels)
+    vec4 trace;    // x step factor beta, y minimum step (voxels), z maximum distance (m), w first sample (voxels)
+    vec4 surface;  // x clearance K (0 = off), y surface thickness (voxels): see traceConeAO
 };
-DVSGI_CHECK_SIZE(ConeParams, 16);
+DVSGI_CHECK_SIZE(ConeParams, 32);
+
+// Default cone clearance K and the thickness of a voxelized surface.
+DVSGI_CONST(float, CONE_CLEARANCE_DEFAULT, 3.0);
+DVSGI_CONST(float, CONE_SURFACE_VOXELS, 1.0);
 
 struct BouncePush {
     ConeParams cone;
 };
-DVSGI_CHECK_SIZE(BouncePush, 16);
+DVSGI_CHECK_SIZE(BouncePush, 32);
 
 DVSGI_CONST(uint, BIND_CONE_GRID, 0);
 DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear

@@ -40,7 +40,8 @@ gpu::Image termImage(const gpu::Context& ctx, uint32_t w, uint32_t h, const char
 sh::ConeParams coneParams(const GatherSettings& s, const vxgi::VoxelVolumes& v) {
     const float diagonal = v.grid.voxelSize * float(v.grid.n) * 1.7320508f;
     return sh::ConeParams{glm::vec4(s.stepFactor, s.minStepVoxels, s.maxDistance > 0.0f ? s.maxDistance : diagonal,
-                                    s.firstSampleVoxels)};
+                                    s.firstSampleVoxels),
+                          glm::vec4(s.clearance, sh::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
 }
 
 GatherPass::GatherPass(const gpu::Context& ctx, uint32_t width, uint32_t height, float traceScale)

@@ -24,6 +24,7 @@ struct GatherSettings {
     float maxDistance = 0.0f;     // metres; 0 = the grid's diagonal
     float firstSampleVoxels = 1.0f;
     float normalOffsetVoxels = 2.5f;  // clears the 2-voxel directional cells' trilinear footprint
+    float clearance = shader::CONE_CLEARANCE_DEFAULT;  // K of traceConeAO (0 = plain diameter rule)
     float aoLambda = 0.5f;        // f(r) = 1 / (1 + lambda r), r in voxels
     bool specular = true;
     float minSpecularDegrees = 1.0f;  // half-angle of the narrowest specular cone, degrees

@@ -24,7 +24,7 @@ struct ShadowConeSettings {
     bool enabled = false;
     float apertureDegrees = 5.0f;  // full cone angle
     float normalOffsetVoxels = 1.5f;
-    shader::ConeParams cone{glm::vec4(0.5f, 0.5f, 0.0f, 1.0f)};
+    shader::ConeParams cone{glm::vec4(0.5f, 0.5f, 0.0f, 1.0f), glm::vec4(shader::CONE_CLEARANCE_DEFAULT, shader::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
 };
 
 class LightingPass {

@@ -17,8 +17,11 @@ GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n) {
     if (!bounds.valid()) return GridSpec{glm::vec3(-1.0f), 2.0f / float(n), n};
     const glm::vec3 extent = bounds.max - bounds.min;
     const float longest = std::max({extent.x, extent.y, extent.z, 1e-4f});
-    // longest + 2 voxels = N voxels.
-    const float voxel = longest / float(std::max(n, 3u) - 2);
+    // longest + 8 voxels = N voxels: a margin of four voxels on each side puts
+    // walls on the scene's edge inside the grid, where cones cross their whole
+    // trilinear footprint before leaving (with one voxel, cones left through
+    // the edge cells of a closed box at partial opacity and lost energy).
+    const float voxel = longest / float(std::max(n, 9u) - 8);
     const float edge = voxel * float(n);
     GridSpec g;
     g.n = n;

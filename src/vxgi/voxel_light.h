@@ -32,7 +32,8 @@ struct VoxelLightSettings {
     float softKappa = 0.5f;               // soft raycast: nu += (1 - nu) * kappa / t
     float shadowNormalOffset = 1.5f;      // texels
     uint32_t bounces = 1;                 // extra bounces per voxel (0 = direct only)
-    shader::ConeParams bounceCone{glm::vec4(1.0f, 0.5f, 1e30f, 1.0f)};  // beta, min step, max dist, start
+    // beta, min step, max distance, first sample; clearance and surface thickness
+    shader::ConeParams bounceCone{glm::vec4(1.0f, 0.5f, 1e30f, 1.0f), glm::vec4(shader::CONE_CLEARANCE_DEFAULT, shader::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
 };
 
 struct ShadowInputs {

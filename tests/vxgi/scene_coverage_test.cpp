@@ -27,7 +27,7 @@ TEST_F(SceneCoverage, CornellBox64) {
     const scene::Scene s = scene::builtinCornellBox();
     const auto items = scene::drawItems(s, scene::worldMatrices(s));
     const vxgi::GridSpec grid = vxgi::fitGrid(scene::worldBounds(s, items), 64);
-    // fitGrid leaves one voxel of margin, so the walls lie on voxel faces up
+    // fitGrid leaves four voxels of margin, so the walls lie on voxel faces up
     // to float rounding: the GPU's depth slack then marks the layers on both
     // sides where the reference, exact on the rounded coordinates, may mark
     // one. Those extras stay within one voxel.
