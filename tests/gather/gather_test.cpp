@@ -23,6 +23,15 @@ render::RenderSettings settings(uint32_t size, uint32_t voxels, uint32_t term) {
     return s;
 }
 
+// A directional light named "sun" of irradiance `intensity` (W/m^2) shining along `direction`.
+void addSun(scene::Scene& s, float intensity, glm::vec3 direction) {
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    sun.intensity = intensity;
+    addLight(s, sun, glm::vec3(0, 3, 0), glm::normalize(direction));
+}
+
 // Six inward-facing quads of half-size h centred at the origin.
 void addClosedBox(scene::Scene& s, int material, float h) {
     const float q = glm::half_pi<float>();
@@ -119,11 +128,7 @@ TEST_F(ConeTracing, LoneLitPlaneGetsNoIndirectLight) {
     scene::Scene s;
     addQuad(s, addMaterial(s, glm::vec3(0.8f)), glm::vec3(0), 1.0f);
     addTopDownCamera(s, 1.6f, glm::radians(60.0f));
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.intensity = 3.0f;
-    addLight(s, sun, glm::vec3(0, 3, 0), glm::normalize(glm::vec3(0.7f, -1.0f, 0.0f)));
+    addSun(s, 3.0f, glm::vec3(0.7f, -1.0f, 0.0f));
     auto meanRed = [](const image::ImageRGBA32F& img) {
         double sum = 0.0;
         for (uint32_t y = 2; y < 30; ++y)
@@ -154,11 +159,7 @@ TEST_F(ConeTracing, WiderShadowConeGivesWiderPenumbra) {
     addQuad(s, white, glm::vec3(0), 1.0f);
     addQuad(s, white, glm::vec3(0, 0.5f, 0), 0.25f);  // occluder
     addTopDownCamera(s, 2.0f, glm::radians(45.0f));
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.intensity = 2.0f;
-    addLight(s, sun, glm::vec3(0, 3, 0), glm::normalize(glm::vec3(0.6f, -1.0f, 0.0f)));
+    addSun(s, 2.0f, glm::vec3(0.6f, -1.0f, 0.0f));
     int penumbra[2] = {0, 0};
     const float apertures[2] = {2.0f, 20.0f};
     for (int i = 0; i < 2; ++i) {

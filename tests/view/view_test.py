@@ -204,6 +204,21 @@ def window_difference(grabbed, expected):
     return total / count
 
 
+def wait_for_window(x, proc):
+    """The viewer's top-level windows once one appears (empty after 60 s or if it exits)."""
+    deadline, wins = time.time() + 60, []
+    while not wins and time.time() < deadline and proc.poll() is None:
+        wins = x.windows()
+        time.sleep(0.05)
+    return wins
+
+
+def stop(proc, x):
+    if proc.poll() is None:
+        proc.kill()
+    x.close()
+
+
 def window_checks(display, env, common):
     """Resize the window while it runs, read what it shows until it matches a
     headless render at the new size (sRGB-encoded as the PNG preview), then
@@ -225,10 +240,7 @@ def window_checks(display, env, common):
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     best = None
     try:
-        deadline, wins = time.time() + 60, []
-        while not wins and time.time() < deadline and proc.poll() is None:
-            wins = x.windows()
-            time.sleep(0.05)
+        wins = wait_for_window(x, proc)
         check("view: window appears", bool(wins))
         if wins:
             win = wins[-1][0]
@@ -244,9 +256,7 @@ def window_checks(display, env, common):
             x.request_close(win)
         out, err = proc.communicate(timeout=120)
     finally:
-        if proc.poll() is None:
-            proc.kill()
-        x.close()
+        stop(proc, x)
     check("view closed by WM_DELETE_WINDOW after a resize: exit 0, no validation errors",
           proc.returncode == 0 and validation_clean(proc.returncode, err), "rc=%s %s" % (proc.returncode, err[-1000:]))
     print("mean |window - sRGB(headless 200x150)|: %s levels" % ("%.3f" % best if best is not None else "n/a"))
@@ -272,10 +282,7 @@ def interaction_check(display, env, common, name, keysym, what):
     proc = subprocess.Popen([DVSGI, "view", *common, "--quiet", "--screenshot", shot],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     try:
-        deadline, wins = time.time() + 60, []
-        while not wins and time.time() < deadline and proc.poll() is None:
-            wins = x.windows()
-            time.sleep(0.05)
+        wins = wait_for_window(x, proc)
         if wins:
             win = wins[-1][0]
             time.sleep(2.0)
@@ -286,9 +293,7 @@ def interaction_check(display, env, common, name, keysym, what):
             x.request_close(win)
         out, err = proc.communicate(timeout=120)
     finally:
-        if proc.poll() is None:
-            proc.kill()
-        x.close()
+        stop(proc, x)
     ok = proc.returncode == 0 and validation_clean(proc.returncode, err) and os.path.exists(shot)
     d = mean_relative_difference(read_exr(shot), read_exr(os.path.join(TMP, "ref.exr"))) if ok else 0.0
     print("%s: mean relative difference to the unmoved view %.4f" % (name, d))
