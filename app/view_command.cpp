@@ -323,8 +323,12 @@ int runView(const RenderOptions& options) {
                 const std::string path = o.screenshot.empty()
                                              ? "out/view_" + std::to_string(screenshots) + ".exr"
                                              : o.screenshot;
-                writeScreenshot(*renderer, path, o.exposure);
-                ++screenshots;
+                try {  // a failed screenshot is reported; the window stays open
+                    writeScreenshot(*renderer, path, o.exposure);
+                    ++screenshots;
+                } catch (const std::exception& e) {
+                    std::fprintf(stderr, "dvsgi: screenshot: %s\n", e.what());
+                }
             }
             if (key == GLFW_KEY_TAB) ++selected;
         }

@@ -300,6 +300,41 @@ def interaction_check(display, env, common, name, keysym, what):
     check(name, ok and d > 0.02, "rc=%s diff=%.4f (%s) %s" % (proc.returncode, d, what, err[-500:]))
 
 
+def key_screenshot_check(display, env, common):
+    """Press P (the screenshot key, as the panel's button does) in a running
+    window: the application writes out/view_0.exr and .png under its working
+    directory, and that frame matches the headless render of the same view."""
+    try:
+        x = X11(display)
+    except OSError as e:
+        print("screenshot key check skipped: %s" % e)
+        return
+    cwd = os.path.join(TMP, "keyshot")
+    os.makedirs(cwd, exist_ok=True)
+    proc = subprocess.Popen([DVSGI, "view", *common, "--quiet"], cwd=cwd,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        wins = wait_for_window(x, proc)
+        if wins:
+            win = wins[-1][0]
+            time.sleep(2.0)
+            x.key(win, b"p", True)
+            x.key(win, b"p", False)
+            time.sleep(2.0)
+            x.request_close(win)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        stop(proc, x)
+    exr = os.path.join(cwd, "out", "view_0.exr")
+    written = os.path.exists(exr) and os.path.exists(os.path.join(cwd, "out", "view_0.png"))
+    check("P key: screenshot out/view_0.exr and .png written, clean exit",
+          written and proc.returncode == 0 and validation_clean(proc.returncode, err),
+          "rc=%s %s %s" % (proc.returncode, out[-300:], err[-500:]))
+    if written:
+        d = mean_relative_difference(read_exr(exr), read_exr(os.path.join(TMP, "ref.exr")))
+        check("P key screenshot matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
+
+
 def mean_relative_difference(a, b):
     (wa, ha, ca), (wb, hb, cb) = a, b
     if (wa, ha) != (wb, hb):
@@ -381,6 +416,7 @@ else:
                 check("view --vsync off: exit 0, no validation errors", rc == 0 and validation_clean(rc, err),
                       "rc=%d %s" % (rc, err[-1000:]))
                 window_checks(":%d" % display, venv, common)
+                key_screenshot_check(":%d" % display, venv, common)
                 interaction_check(":%d" % display, venv, common, "fly camera: W moves the view", b"w",
                                   "the camera should move forward")
                 interaction_check(":%d" % display, venv, common, "moving a light (arrow key) changes the frame",
