@@ -282,3 +282,15 @@ TEST(Cli, UsageDocumentsEveryOption) {
                     "1..16384", "-20..20", "box-average"})
         EXPECT_NE(u.find(s), std::string::npos) << "usage lacks '" << s << "'";
 }
+
+TEST(Cli, ConeClearance) {
+    EXPECT_EQ(parse({"render"}).render.coneClearance, 3.0f);
+    for (auto [text, value] : {std::pair{"0", 0.0f}, {"2", 2.0f}, {"3.5", 3.5f}, {"8", 8.0f}}) {
+        const ParseResult r = parseBoth("--cone-clearance", text);
+        ASSERT_TRUE(r.error.empty()) << text << ": " << r.error;
+        EXPECT_EQ(r.render.coneClearance, value) << text;
+    }
+    for (auto* bad : {"-1", "9", "wide", "nan"})
+        expectBadValue("--cone-clearance", bad, "a number in 0..8 (0 = off)");
+    EXPECT_NE(usageText().find("--cone-clearance"), std::string::npos);
+}
