@@ -421,6 +421,8 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
                        {"max_seconds", o.benchMaxSeconds},
                        {"time_step", o.timeStep},
                        {"static_voxelization", "forced every measured frame (markStaticDirty)"},
+                       {"tables", o.benchTables},
+                       {"renderer", parametersJson(o)},
                        {"shared", o.sharedDir},
                        {"dynamic_model", dynamicModel.empty() ? nlohmann::json(nullptr) : nlohmann::json(dynamicModel)},
                        {"quick", o.benchQuick},

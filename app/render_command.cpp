@@ -129,7 +129,24 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
                        {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
                        {"voxel_size", v->grid.voxelSize}};
     }
-    j["parameters"] = {{"voxels", o.voxels},
+    j["parameters"] = parametersJson(o);
+    j["validation_errors"] = ctx.validationErrors();
+    return j;
+}
+
+void writeJson(const std::string& path, const nlohmann::json& j) {
+    std::filesystem::path p(path);
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    std::ofstream f(path);
+    if (!f) throw image::IoError(path + ": cannot open for writing");
+    f << j.dump(2) << "\n";
+    if (!f) throw image::IoError(path + ": write failed");
+}
+
+}  // namespace
+
+nlohmann::json parametersJson(const RenderOptions& o) {
+    nlohmann::json p = {{"voxels", o.voxels},
                        {"conservative", o.hardwareConservative ? "auto" : "gs"},
                        {"bounces", o.bounces},
                        {"normal_weighted", o.normalWeighted},
@@ -149,21 +166,9 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
                        {"shadow_aperture_degrees", o.shadowAperture},
                        {"trace_scale", o.traceScale},
                        {"output", o.output}};
-    for (const auto& [name, mode] : o.lightOcclusion) j["parameters"]["light_occlusion"][name] = mode;
-    j["validation_errors"] = ctx.validationErrors();
-    return j;
+    for (const auto& [name, mode] : o.lightOcclusion) p["light_occlusion"][name] = mode;
+    return p;
 }
-
-void writeJson(const std::string& path, const nlohmann::json& j) {
-    std::filesystem::path p(path);
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-    std::ofstream f(path);
-    if (!f) throw image::IoError(path + ": cannot open for writing");
-    f << j.dump(2) << "\n";
-    if (!f) throw image::IoError(path + ": write failed");
-}
-
-}  // namespace
 
 scene::Scene loadForOptions(const RenderOptions& o) {
     scene::Scene scene = o.scene.empty() ? scene::builtinCornellBox() : scene::loadScene(o.scene);

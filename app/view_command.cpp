@@ -251,6 +251,19 @@ int runView(const RenderOptions& options) {
         return r;
     };
     std::unique_ptr<render::Renderer> renderer = makeRenderer(loaded);
+    // Rebuilds after a change of options; on failure (out of memory at a large
+    // window, say) the message is printed, the previous options come back and
+    // the previous renderer stays. Returns whether it was rebuilt.
+    auto rebuild = [&](const RenderOptions& previous) {
+        try {
+            renderer = makeRenderer(renderer->scene());
+            return true;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", e.what());
+            o = previous;
+            return false;
+        }
+    };
     loaded = scene::Scene{};
     ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
 
@@ -264,7 +277,7 @@ int runView(const RenderOptions& options) {
     size_t selected = 0;  // index into movableNodes()
     uint32_t frame = 0, screenshots = 0;
     double lastMouseX = 0.0, lastMouseY = 0.0;
-    bool looking = false;
+    bool looking = false, screenshotWanted = false;
     auto last = std::chrono::steady_clock::now();
     auto titleTime = last;
     double frameMsAvg = 0.0;
@@ -285,10 +298,11 @@ int runView(const RenderOptions& options) {
             continue;
         }
         if (uint32_t(fbw) != o.width || uint32_t(fbh) != o.height) {
+            const RenderOptions previous = o;
             o.width = uint32_t(fbw);
             o.height = uint32_t(fbh);
             swapchain.create(o.width, o.height, o.vsync);
-            renderer = makeRenderer(renderer->scene());
+            rebuild(previous);  // on failure the old-size frame is shown scaled
         }
 
         // The panel first: it says whether the mouse and keys are its own.
@@ -300,14 +314,7 @@ int runView(const RenderOptions& options) {
         int wantCamera = ui.camera;
         if (ui.screenshot) input.pressed.push_back(GLFW_KEY_P);
         if (ui.recreateSwapchain) swapchain.create(o.width, o.height, o.vsync);
-        if (ui.rebuildRenderer) {
-            try {
-                renderer = makeRenderer(renderer->scene());
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", e.what());
-                o = before;  // the previous renderer is still in place
-            }
-        }
+        if (ui.rebuildRenderer) rebuild(before);
         objectMoved = ui.sceneEdited;
 
         // Discrete keys.
@@ -319,17 +326,7 @@ int runView(const RenderOptions& options) {
                 swapchain.create(o.width, o.height, o.vsync);
                 std::printf("present mode: %s\n", swapchain.presentModeName());
             }
-            if (key == GLFW_KEY_P && frame > 0) {  // the frame on screen
-                const std::string path = o.screenshot.empty()
-                                             ? "out/view_" + std::to_string(screenshots) + ".exr"
-                                             : o.screenshot;
-                try {  // a failed screenshot is reported; the window stays open
-                    writeScreenshot(*renderer, path, o.exposure);
-                    ++screenshots;
-                } catch (const std::exception& e) {
-                    std::fprintf(stderr, "dvsgi: screenshot: %s\n", e.what());
-                }
-            }
+            if (key == GLFW_KEY_P) screenshotWanted = true;
             if (key == GLFW_KEY_TAB) ++selected;
         }
         input.pressed.clear();
@@ -337,9 +334,9 @@ int runView(const RenderOptions& options) {
             const size_t cameras =
                 scene::placedCameras(renderer->scene(), scene::worldMatrices(renderer->scene())).size();
             if (size_t(wantCamera) < cameras) {
+                const RenderOptions previous = o;
                 o.camera = wantCamera;
-                renderer = makeRenderer(renderer->scene());
-                fly.setFrom(renderer->camera().world);
+                if (rebuild(previous)) fly.setFrom(renderer->camera().world);
             }
         }
         if (panel.wantsMouse()) input.scroll = 0.0;
@@ -407,6 +404,19 @@ int runView(const RenderOptions& options) {
             renderer->sceneChanged();  // moved objects trigger the dynamic update
 
         stats = renderer->renderFrame();
+        // After the frame, so the file holds what this renderer just drew
+        // (a rebuild earlier in the loop leaves an output never rendered).
+        if (screenshotWanted) {
+            screenshotWanted = false;
+            const std::string path =
+                o.screenshot.empty() ? "out/view_" + std::to_string(screenshots) + ".exr" : o.screenshot;
+            try {  // a failed screenshot is reported; the window stays open
+                writeScreenshot(*renderer, path, o.exposure);
+                ++screenshots;
+            } catch (const std::exception& e) {
+                std::fprintf(stderr, "dvsgi: screenshot: %s\n", e.what());
+            }
+        }
         if (!swapchain.present(renderer->outputImage(), o.exposure, [&](VkCommandBuffer cmd) { panel.record(cmd); }))
             swapchain.create(o.width, o.height, o.vsync);
         ++frame;

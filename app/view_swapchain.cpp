@@ -140,6 +140,11 @@ void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
         extent_.width = std::clamp(width, caps.minImageExtent.width, caps.maxImageExtent.width);
         extent_.height = std::clamp(height, caps.minImageExtent.height, caps.maxImageExtent.height);
     }
+    // A minimized window has a zero extent, for which no swapchain may be
+    // created: keep the old one; present() skips frames until the next resize.
+    if (extent_.width == 0 || extent_.height == 0) return;
+    if (renderPass_ && format_ != chosen.format)
+        throw gpu::GpuError("the window's swapchain format changed", VK_ERROR_FORMAT_NOT_SUPPORTED);
     uint32_t count = std::max(caps.minImageCount + 1, 2u);
     if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
 
@@ -167,8 +172,6 @@ void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
     if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
     swapchain_ = fresh;
     minImageCount_ = std::max(caps.minImageCount, 2u);
-    if (renderPass_ && format_ != chosen.format)
-        throw gpu::GpuError("the window's swapchain format changed", VK_ERROR_FORMAT_NOT_SUPPORTED);
     format_ = chosen.format;
     VK_CHECK(vkGetSwapchainImagesKHR(ctx_.device, swapchain_, &n, nullptr));
     images_.resize(n);

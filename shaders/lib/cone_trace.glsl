@@ -32,17 +32,25 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
     ao = 0.0;
     float t = params.trace.w * s;
     float stepPrev = 0.0;
+#ifdef CONE_USE_RADIANCE_VOLUME
+    float finest = s;        // the radiance volume's cells
+#else
+    float finest = 2.0 * s;  // directional level 0's cells
+#endif
     for (int i = 0; i < 1024 && t < params.trace.z && acc.a < 0.995; ++i) {
-        float dCone = max(2.0 * t * tanHalf, s);  // diameter = 2 t tan(theta/2), at least a voxel
+        // Diameter 2 t tan(theta/2), no smaller than the finest cell there is.
+        float dCone = max(2.0 * t * tanHalf, finest);
         float d = dCone;
-        // Clearance: a sample's trilinear footprint spans about one cell (of
-        // the diameter's size) on each side, so near the start a wide cone
+        // Clearance: a sample's trilinear footprint spans about one cell on
+        // each side, and blending two mip levels doubles that, so a wide cone
         // would read the cells of the surface it leaves (self-illumination,
-        // AO < 1 on an open plane). Keep the cell size below the height over
-        // that surface (minus its voxel thickness) divided by K.
+        // AO < 1 on an open plane). Keep the cell below the height over that
+        // surface (minus its voxel thickness) divided by K. For cones wider
+        // than about cos(angle to the normal) / K this holds along the whole
+        // cone: it then samples like a narrower cone.
         if (params.surface.x > 0.0) {
             float hs = originHeight + t * dot(dir, n);
-            d = clamp((hs - params.surface.y * s) / params.surface.x, s, d);
+            d = clamp((hs - params.surface.y * s) / params.surface.x, finest, d);
         }
         float level = log2(d / s);
         vec3 uvw = (origin + dir * t - grid.originSize.xyz) / extent;

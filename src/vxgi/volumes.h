@@ -19,8 +19,9 @@ struct GridSpec {
     uint32_t n = 128;        // voxels per edge
 };
 
-// A cube on the longest side of `bounds`, centred on it, with one voxel of
-// margin on every side so surfaces on the bounds never sit on the grid's edge.
+// A cube on the longest side of `bounds`, centred on it, with four voxels of
+// margin on every side so surfaces on the bounds never sit on the grid's edge
+// and cones cross their whole footprint before leaving the grid.
 GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n);
 // A cube on the longest side of a user-given box (no margin added).
 GridSpec gridForBox(const glm::vec3& boxMin, const glm::vec3& boxMax, uint32_t n);

@@ -19,7 +19,7 @@ import compare  # noqa: E402  (shared/tools/compare.py: the metric definitions)
 # Voxel bounces and cone set per scene, the closest to the references
 # (docs/quality.md has the convergence tables): the emissive box is lit only
 # through cones from a small emitter and its bright walls need many bounces.
-CASES = [("cornell-lights", ["--bounces", "4", "--cones", "16"]),
+CASES = [("cornell-lights", ["--bounces", "6", "--cones", "16"]),
          ("cornell-emissive", ["--bounces", "16", "--cones", "16"])]
 tmp = tempfile.mkdtemp(prefix="dvsgi-gi-")
 results, failures = {}, []
