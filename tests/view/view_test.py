@@ -219,15 +219,34 @@ def stop(proc, x):
     x.close()
 
 
+def drive_window(display, env, args, act, cwd=None):
+    """Runs `dvsgi view ARGS` until its window appears, calls act(x, win, proc),
+    closes the window as a window manager would and waits for the exit.
+    Returns (returncode, stdout, stderr, window appeared), or None when the X
+    display cannot be opened from Python."""
+    try:
+        x = X11(display)
+    except OSError as e:
+        print("window check skipped: %s" % e)
+        return None
+    proc = subprocess.Popen([DVSGI, "view", *args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, env=env)
+    try:
+        wins = wait_for_window(x, proc)
+        if wins:
+            win = wins[-1][0]
+            act(x, win, proc)
+            x.request_close(win)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        stop(proc, x)
+    return proc.returncode, out, err, bool(wins)
+
+
 def window_checks(display, env, common):
     """Resize the window while it runs, read what it shows until it matches a
     headless render at the new size (sRGB-encoded as the PNG preview), then
     close it as a window manager would and check the clean exit."""
-    try:
-        x = X11(display)
-    except OSError as e:
-        print("window content checks skipped: %s" % e)
-        return
     ref = os.path.join(TMP, "ref200.exr")
     rc, _, err = run(["render", *common, "--width", "200", "--height", "150", "--quiet", "--out", ref], env)
     check("headless render at 200x150", rc == 0, err[-500:])
@@ -235,33 +254,30 @@ def window_checks(display, env, common):
         return
     expected = read_exr(ref)
     shot = os.path.join(TMP, "resized.exr")
+    best = []
+
+    def resize_and_watch(x, win, proc):
+        time.sleep(2.0)  # a few frames at the first size
+        x.resize(win, 200, 150)
+        deadline = time.time() + 60
+        while time.time() < deadline and proc.poll() is None:
+            time.sleep(0.5)  # the swapchain and the renderer follow the new size
+            best.append(window_difference(x.pixels(win, 200, 150), expected))
+            if best[-1] < 2.0:
+                break
+
     # No frame limit: the window runs until it is asked to close, as by a user.
-    proc = subprocess.Popen([DVSGI, "view", *common, "--quiet", "--screenshot", shot],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    best = None
-    try:
-        wins = wait_for_window(x, proc)
-        check("view: window appears", bool(wins))
-        if wins:
-            win = wins[-1][0]
-            time.sleep(2.0)  # a few frames at the first size
-            x.resize(win, 200, 150)
-            deadline = time.time() + 60
-            while time.time() < deadline and proc.poll() is None:
-                time.sleep(0.5)  # the swapchain and the renderer follow the new size
-                d = window_difference(x.pixels(win, 200, 150), expected)
-                best = d if best is None else min(best, d)
-                if d < 2.0:
-                    break
-            x.request_close(win)
-        out, err = proc.communicate(timeout=120)
-    finally:
-        stop(proc, x)
+    result = drive_window(display, env, [*common, "--quiet", "--screenshot", shot], resize_and_watch)
+    if result is None:
+        return
+    rc, _, err, appeared = result
+    check("view: window appears", appeared)
     check("view closed by WM_DELETE_WINDOW after a resize: exit 0, no validation errors",
-          proc.returncode == 0 and validation_clean(proc.returncode, err), "rc=%s %s" % (proc.returncode, err[-1000:]))
-    print("mean |window - sRGB(headless 200x150)|: %s levels" % ("%.3f" % best if best is not None else "n/a"))
-    check("window shows the frame at the new size (< 2 levels)", best is not None and best < 2.0,
-          "best mean difference %s" % best)
+          rc == 0 and validation_clean(rc, err), "rc=%s %s" % (rc, err[-1000:]))
+    b = min(best) if best else None
+    print("mean |window - sRGB(headless 200x150)|: %s levels" % ("%.3f" % b if b is not None else "n/a"))
+    check("window shows the frame at the new size (< 2 levels)", b is not None and b < 2.0,
+          "best mean difference %s" % b)
     if os.path.exists(shot):
         d = mean_relative_difference(read_exr(shot), expected)
         check("screenshot after the resize matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
@@ -273,63 +289,46 @@ def interaction_check(display, env, common, name, keysym, what):
     """Hold a key for a second in a running window; the screenshot must then
     differ from the headless render of the unmoved scene (the camera or the
     object moved), with a clean exit and no validation errors."""
-    try:
-        x = X11(display)
-    except OSError as e:
-        print("%s skipped: %s" % (name, e))
-        return
     shot = os.path.join(TMP, keysym.decode() + ".exr")
-    proc = subprocess.Popen([DVSGI, "view", *common, "--quiet", "--screenshot", shot],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    try:
-        wins = wait_for_window(x, proc)
-        if wins:
-            win = wins[-1][0]
-            time.sleep(2.0)
-            x.key(win, keysym, True)
-            time.sleep(1.0)
-            x.key(win, keysym, False)
-            time.sleep(1.0)
-            x.request_close(win)
-        out, err = proc.communicate(timeout=120)
-    finally:
-        stop(proc, x)
-    ok = proc.returncode == 0 and validation_clean(proc.returncode, err) and os.path.exists(shot)
+
+    def hold_key(x, win, proc):
+        time.sleep(2.0)
+        x.key(win, keysym, True)
+        time.sleep(1.0)
+        x.key(win, keysym, False)
+        time.sleep(1.0)
+
+    result = drive_window(display, env, [*common, "--quiet", "--screenshot", shot], hold_key)
+    if result is None:
+        return
+    rc, _, err, _ = result
+    ok = rc == 0 and validation_clean(rc, err) and os.path.exists(shot)
     d = mean_relative_difference(read_exr(shot), read_exr(os.path.join(TMP, "ref.exr"))) if ok else 0.0
     print("%s: mean relative difference to the unmoved view %.4f" % (name, d))
-    check(name, ok and d > 0.02, "rc=%s diff=%.4f (%s) %s" % (proc.returncode, d, what, err[-500:]))
+    check(name, ok and d > 0.02, "rc=%s diff=%.4f (%s) %s" % (rc, d, what, err[-500:]))
 
 
 def key_screenshot_check(display, env, common):
     """Press P (the screenshot key, as the panel's button does) in a running
     window: the application writes out/view_0.exr and .png under its working
     directory, and that frame matches the headless render of the same view."""
-    try:
-        x = X11(display)
-    except OSError as e:
-        print("screenshot key check skipped: %s" % e)
-        return
     cwd = os.path.join(TMP, "keyshot")
     os.makedirs(cwd, exist_ok=True)
-    proc = subprocess.Popen([DVSGI, "view", *common, "--quiet"], cwd=cwd,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    try:
-        wins = wait_for_window(x, proc)
-        if wins:
-            win = wins[-1][0]
-            time.sleep(2.0)
-            x.key(win, b"p", True)
-            x.key(win, b"p", False)
-            time.sleep(2.0)
-            x.request_close(win)
-        out, err = proc.communicate(timeout=120)
-    finally:
-        stop(proc, x)
+
+    def press_p(x, win, proc):
+        time.sleep(2.0)
+        x.key(win, b"p", True)
+        x.key(win, b"p", False)
+        time.sleep(2.0)
+
+    result = drive_window(display, env, [*common, "--quiet"], press_p, cwd=cwd)
+    if result is None:
+        return
+    rc, out, err, _ = result
     exr = os.path.join(cwd, "out", "view_0.exr")
     written = os.path.exists(exr) and os.path.exists(os.path.join(cwd, "out", "view_0.png"))
     check("P key: screenshot out/view_0.exr and .png written, clean exit",
-          written and proc.returncode == 0 and validation_clean(proc.returncode, err),
-          "rc=%s %s %s" % (proc.returncode, out[-300:], err[-500:]))
+          written and rc == 0 and validation_clean(rc, err), "rc=%s %s %s" % (rc, out[-300:], err[-500:]))
     if written:
         d = mean_relative_difference(read_exr(exr), read_exr(os.path.join(TMP, "ref.exr")))
         check("P key screenshot matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
