@@ -41,7 +41,7 @@ void main() {
     // Start one voxel off the surface so the cones do not gather the voxel itself.
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n) * s;
     float occlusion;
-    vec3 E = gatherIrradiance6(origin, n, s, pc.cone, occlusion);
+    vec3 E = gatherIrradiance6(origin, n, s, pc.cone, 0.0, occlusion);
     vec3 albedo = voxelAlbedo(v);
     imageStore(outRadiance, v, vec4(d.rgb + albedo / 3.14159265 * E, d.a));
 }

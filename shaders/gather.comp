@@ -57,7 +57,7 @@ void main() {
 
     float occlusion;
     vec3 E = pc.flags.x == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
-                                       : gatherIrradiance6AO(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
+                                       : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
     vec3 diffuse = base.rgb / PI * E * (1.0 - metallic);
     imageStore(outDiffuse, px, vec4(diffuse, 1.0 - occlusion));
 

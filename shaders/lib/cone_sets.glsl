@@ -27,25 +27,3 @@ vec3 gatherIrradiance16(vec3 origin, vec3 n, float originHeight, ConeParams para
     occlusion /= 3.14159265;
     return E;
 }
-
-// The paper's six 60-degree cones (one along n, five at 60 degrees around it),
-// cosine-normalized as above, with distance-weighted occlusion for AO.
-vec3 gatherIrradiance6AO(vec3 origin, vec3 n, float originHeight, ConeParams params, float aoLambda, out float occlusion) {
-    vec3 t, b;
-    coneBasis(n, t, b);
-    const float sin60 = 0.8660254, cos60 = 0.5;
-    const float wCenter = 3.14159265 / 3.5, wSide = 3.14159265 * 0.5 / 3.5;
-    float ao;
-    vec4 c = traceConeAO(origin, n, originHeight, n, TAN_30, params, aoLambda, ao);
-    vec3 E = wCenter * c.rgb;
-    occlusion = wCenter * ao;
-    for (int i = 0; i < 5; ++i) {
-        float phi = 6.28318531 * float(i) / 5.0;
-        vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
-        vec4 s = traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, ao);
-        E += wSide * s.rgb;
-        occlusion += wSide * ao;
-    }
-    occlusion /= 3.14159265;
-    return E;
-}

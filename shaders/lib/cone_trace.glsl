@@ -102,21 +102,25 @@ void coneBasis(vec3 n, out vec3 t, out vec3 b) {
 }
 
 // The paper's six 60-degree cones: one along n, five at 60 degrees from it.
-vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams params, out float occlusion) {
+// `occlusion` is the cones' opacity weighted by f(r) = 1 / (1 + aoLambda r);
+// with aoLambda = 0 it is their plain opacity (the voxel bounce).
+vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams params, float aoLambda,
+                       out float occlusion) {
     vec3 t, b;
     coneBasis(n, t, b);
     const float sin60 = 0.8660254, cos60 = 0.5;
     // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
     const float wCenter = 3.14159265 / 3.5, wSide = 3.14159265 * 0.5 / 3.5;
-    vec4 c = traceCone(origin, n, originHeight, n, TAN_30, params);
+    float ao;
+    vec4 c = traceConeAO(origin, n, originHeight, n, TAN_30, params, aoLambda, ao);
     vec3 E = wCenter * c.rgb;
-    occlusion = wCenter * c.a;
+    occlusion = wCenter * ao;
     for (int i = 0; i < 5; ++i) {
         float phi = 6.28318531 * float(i) / 5.0;
         vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
-        vec4 s = traceCone(origin, n, originHeight, dir, TAN_30, params);
+        vec4 s = traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, ao);
         E += wSide * s.rgb;
-        occlusion += wSide * s.a;
+        occlusion += wSide * ao;
     }
     occlusion /= 3.14159265;
     return E;
