@@ -1,0 +1,42 @@
+#!/usr/bin/python3
+"""Prints the markdown tables of docs/benchmarks.md from a `dvsgi bench` JSON:
+median GPU ms per pass for the default settings (one column per scene and
+voxel resolution), then the frame time of every variant (Tables III and V).
+Usage: scripts/bench-summary.py BENCH.json"""
+import json
+import sys
+
+data = json.load(open(sys.argv[1]))
+ms = [m for m in data["measurements"] if m.get("status") == "ok"]
+dev = data["device"]
+s = data["settings"]
+print(f"Device: {dev['name']} (driver {dev.get('driver_info', '?')}), {s['width']}x{s['height']}, "
+      f"{s['frames']} measured + {s['warmup_frames']} warm-up frames, {data['date']}\n")
+base = [m for m in ms if not m.get("variant")]
+cols = [f"{m['scene']} {m['voxels']}³" for m in base]
+order = []
+for m in base:
+    for p in m["passes"]:
+        if p["name"] not in order:
+            order.append(p["name"])
+print("| median GPU ms | " + " | ".join(cols) + " |")
+print("|---|" + "---|" * len(cols))
+for name in order:
+    row = []
+    for m in base:
+        v = next((p["median_ms"] for p in m["passes"] if p["name"] == name), None)
+        row.append("–" if v is None else f"{v:.2f}")
+    print(f"| {name} | " + " | ".join(row) + " |")
+print("| **frame** | " + " | ".join(f"**{m['frame_gpu']['median_ms']:.2f}**" for m in base) + " |")
+print("| GPU memory (MiB) | " + " | ".join(f"{m['gpu_memory_bytes'] / 2**20:.0f}" for m in base) + " |")
+variants = sorted({m.get("variant", "") for m in ms} - {""})
+if variants:
+    print("\n| frame GPU ms (median) | " + " | ".join(cols) + " |")
+    print("|---|" + "---|" * len(cols))
+    for v in [""] + variants:
+        row = []
+        for b in base:
+            m = next((x for x in ms if x["scene"] == b["scene"] and x["voxels"] == b["voxels"]
+                      and x.get("variant", "") == v), None)
+            row.append("–" if m is None else f"{m['frame_gpu']['median_ms']:.2f}")
+        print(f"| {v or 'defaults'} | " + " | ".join(row) + " |")
