@@ -190,7 +190,16 @@ const std::vector<OptionSpec>& optionSpecs() {
          }},
         {"--bounces", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
-             o.bounces = uint32_t(parseUnsigned(opt, v, 0, 16, "an integer in 0..16"));
+             o.bouncesAuto = v == "auto";
+             if (!o.bouncesAuto) o.bounces = uint32_t(parseUnsigned(opt, v, 0, 64, "'auto' or an integer in 0..64"));
+         }},
+        {"--bounce-convergence", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.bounceConvergence = parseFloat(opt, v, 1e-5f, 0.5f, "a relative change in 0.00001..0.5");
+         }},
+        {"--max-bounces", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.maxBounces = uint32_t(parseUnsigned(opt, v, 1, 1000, "an integer in 1..1000"));
          }},
         {"--normal-weighted", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
@@ -482,8 +491,18 @@ std::string usageText() {
            "  --view-direction D   -x +x -y +y -z +z: which directional volume (default -x)\n"
            "\n"
            "Voxel light:\n"
-           "  --bounces K          extra bounces computed per voxel by cone tracing, 0..16\n"
-           "                       (default 1, as in the paper; 0 = direct light only)\n"
+           "  --bounces auto|K     voxel bounces by cone tracing. auto (default): a single render\n"
+           "                       repeats the bounce until the voxel radiance changes by less\n"
+           "                       than --bounce-convergence (all bounces, converged); later frames\n"
+           "                       (--frames, dvsgi view) add one bounce per frame from the previous\n"
+           "                       frame's light (feedback). K: exactly K bounces every frame, 0..64\n"
+           "                       (the paper: 1; 0 = direct light only)\n"
+           "  --bounce-convergence C  converging stops when the light still missing, estimated\n"
+           "                       from how the change sum|dY|/sum Y of voxel luminance shrinks per\n"
+           "                       bounce, is below C (default 0.005), or when the change is down\n"
+           "                       to the RGBA16F rounding noise (5e-4)\n"
+           "  --max-bounces M      converging stops after M bounces even if not converged, and\n"
+           "                       says so (default 64)\n"
            "  --normal-weighted on|off  normal-weighted attenuation (paper eq. 5, default on)\n"
            "                       or plain Lambert N.L with the averaged normal (eq. 2)\n"
            "  --voxel-occlusion M  occlusion of lights at voxels for all lights: shadowmap,\n"

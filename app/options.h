@@ -39,7 +39,10 @@ struct RenderOptions {
     uint32_t viewDirection = 0;   // 0..5 = -X +X -Y +Y -Z +Z
 
     // Voxel light (issue #4).
-    uint32_t bounces = 1;            // extra bounces per voxel
+    bool bouncesAuto = true;         // --bounces auto: converge (render) / feedback (view, later frames)
+    uint32_t bounces = 1;            // --bounces K: exactly K bounces per frame
+    float bounceConvergence = 0.005f;  // relative change of voxel radiance that ends converging
+    uint32_t maxBounces = 64;        // converging gives up after this many bounces
     bool normalWeighted = true;      // eq. 5 (on) or Lambert N.L (off)
     std::string voxelOcclusion = "per-light";  // shadowmap|raycast|soft|none|per-light
     std::vector<std::pair<std::string, std::string>> lightOcclusion;  // NAME=mode

@@ -109,7 +109,8 @@ void printVoxelGrid(const vxgi::VoxelVolumes& v, bool hardware) {
 }
 
 nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, const render::Renderer& renderer,
-                           const render::FrameStats& stats, const scene::Scene& scene) {
+                           const render::FrameStats& stats, const render::FrameStats& first,
+                           const scene::Scene& scene) {
     nlohmann::json j;
     j["scene"] = scene.source;
     j["device"] = ctx.deviceName;
@@ -122,6 +123,11 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
     j["triangles"] = renderer.triangleCount();
     j["lights"] = scene.lights.size();
     j["gpu_ms"] = stats.gpuMs;
+    // The first frame is the one that converges (--bounces auto); later ones feed back.
+    j["bounces"] = {{"first_frame", first.bounces},
+                    {"first_frame_change", first.bounceChange},
+                    {"converged", first.converged},
+                    {"last_frame", stats.bounces}};
     for (const gpu::TimerResult& r : stats.passes) j["passes"].push_back({{"name", r.name}, {"ms", r.ms}});
     for (const render::MemoryItem& m : renderer.memory()) j["memory_bytes"][m.name] = m.bytes;
     if (const vxgi::VoxelVolumes* v = renderer.volumes()) {
@@ -148,7 +154,9 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 nlohmann::json parametersJson(const RenderOptions& o) {
     nlohmann::json p = {{"voxels", o.voxels},
                        {"conservative", o.hardwareConservative ? "auto" : "gs"},
-                       {"bounces", o.bounces},
+                       {"bounces", o.bouncesAuto ? nlohmann::json("auto") : nlohmann::json(o.bounces)},
+                       {"bounce_convergence", o.bounceConvergence},
+                       {"max_bounces", o.maxBounces},
                        {"normal_weighted", o.normalWeighted},
                        {"voxel_occlusion", o.voxelOcclusion},
                        {"soft_kappa", o.softKappa},
@@ -192,7 +200,10 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.view.mode = toViewMode(o.view);
     rs.view.mip = o.viewMip;
     rs.view.direction = o.viewDirection;
+    rs.voxelLight.bounceMode = o.bouncesAuto ? vxgi::BounceMode::Converge : vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = o.bounces;
+    rs.voxelLight.convergence = o.bounceConvergence;
+    rs.voxelLight.maxBounces = o.maxBounces;
     rs.voxelLight.normalWeighted = o.normalWeighted;
     rs.voxelLight.softKappa = o.softKappa;
     rs.voxelLight.occlusion = occlusionMode(o.voxelOcclusion);
@@ -235,11 +246,20 @@ int runRender(const RenderOptions& o) {
     if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), renderer.voxelizer()->hardwareConservative());
 
     const bool eachFrame = o.outExr.find('#') != std::string::npos;
-    render::FrameStats stats;
+    render::FrameStats stats, first;
     std::string lastExr, lastPng;
     for (uint32_t frame = 0; frame < o.frames; ++frame) {
         if (o.frames > 1 || !scene.animations.empty()) renderer.setTime(float(frame) * o.timeStep);
         stats = renderer.renderFrame();
+        if (frame == 0) {
+            first = stats;
+            if (stats.bounceChange >= 0.0 && !o.quiet)
+                std::printf("voxel bounces: %u, last relative change %.5f%s\n", stats.bounces, stats.bounceChange,
+                            stats.converged ? "" : " (not converged)");
+            if (stats.bounceChange >= 0.0 && !stats.converged)
+                std::fprintf(stderr, "warning: --bounces auto: still changing by %.4f after --max-bounces %u\n",
+                             stats.bounceChange, o.maxBounces);
+        }
         if (!eachFrame && frame + 1 < o.frames) continue;
         const image::ImageRGBA32F img = renderer.readOutput();
         lastExr = framePath(o.outExr, frame);
@@ -247,7 +267,7 @@ int runRender(const RenderOptions& o) {
         lastPng = pngPathFor(lastExr, o);
         if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
     }
-    if (!o.metricsPath.empty()) writeJson(o.metricsPath, metricsJson(o, ctx, renderer, stats, scene));
+    if (!o.metricsPath.empty()) writeJson(o.metricsPath, metricsJson(o, ctx, renderer, stats, first, scene));
     if (!o.quiet) {
         printTable(stats, renderer.memory());
         std::printf("wrote %s%s%s\n", lastExr.c_str(), lastPng.empty() ? "" : " and ", lastPng.c_str());

@@ -246,7 +246,11 @@ int runView(const RenderOptions& options) {
     swapchain.create(o.width, o.height, o.vsync);
 
     auto makeRenderer = [&](const scene::Scene& s) {
-        auto r = std::make_unique<render::Renderer>(ctx, s, settingsForOptions(o));
+        render::RenderSettings rs = settingsForOptions(o);
+        // Interactive frames never block on converging: with --bounces auto
+        // every frame adds one bounce from the previous frame's light.
+        if (rs.voxelLight.bounceMode == vxgi::BounceMode::Converge) rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
+        auto r = std::make_unique<render::Renderer>(ctx, s, rs);
         for (const std::string& w : r->warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
         return r;
     };

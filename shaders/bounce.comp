@@ -2,32 +2,33 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_data.h"
 
-// One extra bounce per occupied voxel (paper section IX): the irradiance from
-// six cones over the voxel's normal hemisphere, traced through the filtered
-// directional volumes of the current radiance, times albedo / pi, added to the
-// voxel's direct light + emission. Repeating it K times (re-filtering between)
-// gives L_direct + T L_direct + ... + T^K L_direct.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+// One bounce per occupied voxel (paper section IX): the irradiance from six
+// cones over the voxel's normal hemisphere, traced through the filtered
+// directional volumes of the radiance so far, times albedo / pi, added to the
+// voxel's direct light + emission. Repeating it (re-filtering between) gives
+// L_direct + T L_direct + ... ; reading the previous frame's volumes instead
+// (feedback) adds one bounce per frame at the cost of one.
+layout(local_size_x = BOUNCE_GROUP, local_size_y = BOUNCE_GROUP, local_size_z = BOUNCE_GROUP) in;
 
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional[6];
 layout(set = 0, binding = BIND_BOUNCE_ACCUM, r32f) uniform readonly image3D accum;
 layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D direct;
-layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform writeonly image3D outRadiance;
+layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
+layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { float stats[]; };
 layout(push_constant) uniform Push { BouncePush pc; };
 
 #include "lib/voxel_attributes.glsl"
 #include "lib/cone_trace.glsl"
 
-void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
-    int N = int(grid.dims.x);
-    if (any(greaterThanEqual(v, ivec3(N)))) return;
+const uint GROUP_SIZE = BOUNCE_GROUP * BOUNCE_GROUP * BOUNCE_GROUP;
+shared vec2 partial[GROUP_SIZE];
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+vec4 bounced(ivec3 v) {
     vec4 d = imageLoad(direct, v);
-    if (voxelCount(v) <= 0.0) {
-        imageStore(outRadiance, v, d);
-        return;
-    }
+    if (voxelCount(v) <= 0.0) return d;
     vec3 n = voxelNormal(v);
     if (dot(n, n) < 0.5) {  // opposite faces cancelled: use the strongest weight's axis
         vec3 pos, neg;
@@ -42,6 +43,34 @@ void main() {
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n) * s;
     float occlusion;
     vec3 E = gatherIrradiance6(origin, n, s, pc.cone, 0.0, occlusion);
-    vec3 albedo = voxelAlbedo(v);
-    imageStore(outRadiance, v, vec4(d.rgb + albedo / 3.14159265 * E, d.a));
+    return vec4(d.rgb + voxelAlbedo(v) / 3.14159265 * E, d.a);
+}
+
+void main() {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    int N = int(grid.dims.x);
+    vec2 change = vec2(0.0);
+    if (all(lessThan(v, ivec3(N)))) {
+        vec4 r = bounced(v);
+        if (pc.flags.x != 0u && r.a > 0.0) {
+            float before = luminance(imageLoad(outRadiance, v).rgb), after = luminance(r.rgb);
+            change = vec2(abs(after - before), after);
+        }
+        imageStore(outRadiance, v, r);
+    }
+    if (pc.flags.x == 0u) return;
+    // Tree reduction of the workgroup's sums (all invocations reach the barriers).
+    uint i = gl_LocalInvocationIndex;
+    partial[i] = change;
+    barrier();
+    for (uint stride = GROUP_SIZE / 2u; stride > 0u; stride /= 2u) {
+        if (i < stride) partial[i] += partial[i + stride];
+        barrier();
+    }
+    if (i == 0u) {
+        uvec3 g = gl_WorkGroupID, n = gl_NumWorkGroups;
+        uint group = (g.z * n.y + g.y) * n.x + g.x;
+        stats[group * BOUNCE_STATS_FLOATS] = partial[0].x;
+        stats[group * BOUNCE_STATS_FLOATS + 1u] = partial[0].y;
+    }
 }

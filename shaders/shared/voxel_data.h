@@ -108,15 +108,23 @@ DVSGI_CONST(float, CONE_SURFACE_VOXELS, 1.0);
 
 struct BouncePush {
     ConeParams cone;
+    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS)
 };
-DVSGI_CHECK_SIZE(BouncePush, 32);
+DVSGI_CHECK_SIZE(BouncePush, 48);
+
+// The bounce's workgroup edge, and what each workgroup writes when asked:
+// the sum over its occupied voxels of |luminance change| and of the new
+// luminance (two floats), so the host can tell when bounces have converged.
+DVSGI_CONST(uint, BOUNCE_GROUP, 4);
+DVSGI_CONST(uint, BOUNCE_STATS_FLOATS, 2);
 
 DVSGI_CONST(uint, BIND_CONE_GRID, 0);
 DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear
 DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips (array of 6)
 DVSGI_CONST(uint, BIND_BOUNCE_ACCUM, 3);
 DVSGI_CONST(uint, BIND_BOUNCE_DIRECT, 4);     // direct light + emission (storage, read)
-DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, write)
+DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, read for the change, then written)
+DVSGI_CONST(uint, BIND_BOUNCE_STATS, 6);      // float[BOUNCE_STATS_FLOATS] per workgroup
 
 // Voxel debug view (VoxelViewPush.mode.x).
 DVSGI_CONST(uint, VIEW_ALBEDO, 0);

@@ -66,7 +66,9 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     gbuffer_ = std::make_unique<GBufferPass>(ctx, *sceneGpu_, iw, ih);
     lighting_ = std::make_unique<LightingPass>(ctx, iw, ih);
     composite_ = std::make_unique<CompositePass>(ctx, settings.width, settings.height, settings.supersample);
-    timers_ = std::make_unique<gpu::GpuTimers>(ctx);
+    // Converging records three scopes per bounce (frame, bounce, filtering).
+    const uint32_t bounceScopes = 3 * std::max({settings.voxelLight.maxBounces, settings.voxelLight.bounces, 1u});
+    timers_ = std::make_unique<gpu::GpuTimers>(ctx, 64 + bounceScopes);
     gather_ = std::make_unique<GatherPass>(ctx, iw, ih, settings.gather.traceScale);
     // Clamp to edge, not to a transparent border: a border would halve the
     // opacity of walls on the grid's edge and cones would leave the grid
@@ -151,53 +153,129 @@ void Renderer::updateFrameConstants() {
     gpu::uploadBuffer(ctx_, *frame_, &f, sizeof(f));
 }
 
-void Renderer::recordVoxelLight(VkCommandBuffer cmd) {
+void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
+    bounce_->record(cmd, *volumes_, inject_->direct, settings_.voxelLight, withStats ? bounceStats_.get() : nullptr,
+                    timers_.get());
+    aniso_->record(cmd, *volumes_, timers_.get(), "voxel filtering (bounce)");
+}
+
+// Voxelization, shadow maps and the voxel light up to (not including) the
+// bounces of Fixed/Converge; a Feedback frame records its one bounce here.
+void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
+    if (voxelizer_) {
+        if (staticDirty_) {
+            voxelizer_->clearAll(cmd, *volumes_, t);
+            voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
+        }
+        voxelizer_->clearDynamic(cmd, *volumes_, t);
+        voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
+    }
+    shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
+    if (!voxelizer_) return;
     const vxgi::ShadowInputs shadows{lights_->handle(), lightCount_,         views_->handle(),
                                      shadows_->map().view(), shadows_->sampler().handle(), settings_.shadows};
     inject_->record(cmd, *volumes_, shadows, settings_.voxelLight, t);
+    if (feedbackFrame()) {
+        // The directional volumes still hold the previous frame's filtered
+        // radiance: one bounce from them adds one more bounce of light.
+        recordBounce(cmd, false);
+        return;
+    }
     inject_->copyToRadiance(cmd, *volumes_);
     aniso_->record(cmd, *volumes_, t, "voxel filtering");
-    for (uint32_t b = 0; b < settings_.voxelLight.bounces; ++b) {
-        bounce_->record(cmd, *volumes_, inject_->direct, settings_.voxelLight, t);
-        aniso_->record(cmd, *volumes_, t, "voxel filtering (bounce)");
+}
+
+void Renderer::recordImage(VkCommandBuffer cmd) {
+    gpu::GpuTimers* t = timers_.get();
+    if (settings_.view.mode != ViewMode::Final) {
+        voxelView_->record(cmd, *volumes_, *frame_, composite_->output, settings_.view, t);
+        return;
     }
+    gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
+    lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, *volumes_, volumeSampler_.handle(),
+                      settings_.shadowCones, t);
+    const bool traced = voxelizer_ != nullptr;
+    if (traced) {
+        gather_->record(cmd, *gbuffer_, *volumes_, volumeSampler_.handle(), *frame_, settings_.gather, t);
+    } else {
+        gpu::transition(cmd, gather_->diffuse, gpu::use::Undefined, gpu::use::ComputeWrite);
+        gpu::transition(cmd, gather_->specular, gpu::use::Undefined, gpu::use::ComputeWrite);
+    }
+    composite_->record(cmd, lighting_->direct, lighting_->shadow, gather_->diffuse, gather_->specular, traced,
+                       settings_.outputTerm, settings_.applyAO, t);
+}
+
+bool Renderer::feedbackFrame() const {
+    const vxgi::BounceMode m = settings_.voxelLight.bounceMode;
+    return m == vxgi::BounceMode::Feedback || (m == vxgi::BounceMode::Converge && haveHistory_);
+}
+
+double Renderer::bounceChange() const {
+    const float* f = static_cast<const float*>(bounceStats_->mapped());
+    double change = 0.0, total = 0.0;
+    const uint32_t count = vxgi::BouncePass::statsFloats(volumes_->grid.n);
+    for (uint32_t i = 0; i + 1 < count; i += sh::BOUNCE_STATS_FLOATS) {
+        change += f[i];
+        total += f[i + 1];
+    }
+    return total > 0.0 ? change / total : 0.0;
 }
 
 FrameStats Renderer::renderFrame() {
     timers_->reset();
     gpu::GpuTimers* t = timers_.get();
+    FrameStats stats;
+    const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
+    const bool feedback = voxelizer_ && feedbackFrame();
+    const bool converge = voxelizer_ && !feedback && vl.bounceMode == vxgi::BounceMode::Converge;
+    const uint32_t fixed = voxelizer_ && vl.bounceMode == vxgi::BounceMode::Fixed ? vl.bounces : 0;
+    if (converge && !bounceStats_)
+        bounceStats_ = std::make_unique<gpu::Buffer>(
+            ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(volumes_->grid.n), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            gpu::MemoryUse::Readback, "bounce statistics");
+    // Converging takes one submission per bounce (the host reads each one's
+    // change); everything else is one command buffer.
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         gpu::GpuTimerScope total(t, cmd, "frame");
-        if (voxelizer_) {
-            if (staticDirty_) {
-                voxelizer_->clearAll(cmd, *volumes_, t);
-                voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
-            }
-            voxelizer_->clearDynamic(cmd, *volumes_, t);
-            voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
-        }
-        shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
-        if (voxelizer_) recordVoxelLight(cmd);
-        if (settings_.view.mode != ViewMode::Final) {
-            voxelView_->record(cmd, *volumes_, *frame_, composite_->output, settings_.view, t);
-            return;
-        }
-        gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
-        lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, *volumes_, volumeSampler_.handle(),
-                          settings_.shadowCones, t);
-        const bool traced = voxelizer_ != nullptr;
-        if (traced) {
-            gather_->record(cmd, *gbuffer_, *volumes_, volumeSampler_.handle(), *frame_, settings_.gather, t);
-        } else {
-            gpu::transition(cmd, gather_->diffuse, gpu::use::Undefined, gpu::use::ComputeWrite);
-            gpu::transition(cmd, gather_->specular, gpu::use::Undefined, gpu::use::ComputeWrite);
-        }
-        composite_->record(cmd, lighting_->direct, lighting_->shadow, gather_->diffuse, gather_->specular, traced,
-                           settings_.outputTerm, settings_.applyAO, t);
+        recordVoxels(cmd);
+        for (uint32_t b = 0; b < fixed; ++b) recordBounce(cmd, false);
+        if (converge) recordBounce(cmd, true);
+        if (!converge) recordImage(cmd);
     });
+    stats.bounces = feedback ? 1 : fixed;
+    if (converge) {
+        // Bounce increments shrink geometrically (by r per bounce), so what is
+        // still missing after a change c is about c r / (1 - r): stop when that
+        // is below the threshold, or when the change is down to the rounding
+        // noise of the RGBA16F radiance (it levels off near 2.5e-4).
+        constexpr double kHalfFloatFloor = 5e-4;
+        double previous = 0.0;
+        auto done = [&](double change) {
+            const double r = previous > 0.0 ? change / previous : 1.0;
+            const double remaining = r < 1.0 ? change * r / (1.0 - r) : 1e30;
+            previous = change;
+            return change <= kHalfFloatFloor || remaining <= vl.convergence;
+        };
+        stats.bounces = 1;
+        stats.bounceChange = bounceChange();
+        stats.converged = done(stats.bounceChange);
+        while (!stats.converged && stats.bounces < vl.maxBounces) {
+            ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+                gpu::GpuTimerScope total(t, cmd, "frame");
+                recordBounce(cmd, true);
+            });
+            ++stats.bounces;
+            stats.bounceChange = bounceChange();
+            stats.converged = done(stats.bounceChange);
+        }
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+            gpu::GpuTimerScope total(t, cmd, "frame");
+            recordImage(cmd);
+        });
+    }
     staticDirty_ = false;
-    FrameStats stats;
+    haveHistory_ = voxelizer_ != nullptr;
     for (const gpu::TimerResult& r : timers_->results()) {
         if (r.name == "frame")
             stats.gpuMs = r.ms;

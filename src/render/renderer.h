@@ -51,6 +51,9 @@ struct RenderSettings {
 struct FrameStats {
     std::vector<gpu::TimerResult> passes;
     double gpuMs = 0.0;  // sum of the passes
+    uint32_t bounces = 0;         // voxel bounces computed this frame
+    double bounceChange = -1.0;   // relative radiance change of the last bounce (-1: not measured)
+    bool converged = false;       // BounceMode::Converge reached its threshold this frame
 };
 
 struct MemoryItem {
@@ -109,7 +112,11 @@ public:
 private:
     void updateFrameConstants();
     void uploadLights();
-    void recordVoxelLight(VkCommandBuffer cmd);
+    void recordVoxels(VkCommandBuffer cmd);
+    void recordBounce(VkCommandBuffer cmd, bool withStats);
+    void recordImage(VkCommandBuffer cmd);
+    double bounceChange() const;
+    bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
 
     const gpu::Context& ctx_;
     scene::Scene scene_;  // own copy: animation and edits change it
@@ -133,6 +140,8 @@ private:
     gpu::Sampler volumeSampler_;  // trilinear + mips, clamped to the grid's edge
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
+    bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
+    std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(N) floats
     std::unique_ptr<gpu::GpuTimers> timers_;
 };
 

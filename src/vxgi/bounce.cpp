@@ -33,14 +33,22 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_CONE_DIRECTIONAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs, 6},
                        {sh::BIND_BOUNCE_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_BOUNCE_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
+    // Bound when no statistics are asked for (the binding must stay valid).
+    noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
+}
+
+uint32_t BouncePass::statsFloats(uint32_t n) {
+    const uint64_t groups = gpu::groupCount(n, sh::BOUNCE_GROUP);
+    return uint32_t(groups * groups * groups * sh::BOUNCE_STATS_FLOATS);
 }
 
 void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::Image& direct,
-                        const VoxelLightSettings& settings, gpu::GpuTimers* timers) const {
+                        const VoxelLightSettings& settings, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
     std::array<VkImageView, 6> dirs;
@@ -52,14 +60,16 @@ void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::I
         .storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
         .storageImage(sh::BIND_BOUNCE_DIRECT, direct.view())
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
+        .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .push(ctx_, cmd, pipeline_);
-    sh::BouncePush push{settings.bounceCone};
+    sh::BouncePush push{settings.bounceCone, glm::uvec4(stats ? 1u : 0u, 0u, 0u, 0u)};
     // The default maximum distance is the grid's diagonal.
     if (push.cone.trace.z > 1e29f) push.cone.trace.z = v.grid.voxelSize * float(v.grid.n) * 1.7320508f;
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    const uint32_t groups = gpu::groupCount(v.grid.n, 4);
+    const uint32_t groups = gpu::groupCount(v.grid.n, sh::BOUNCE_GROUP);
     vkCmdDispatch(cmd, groups, groups, groups);
     gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    if (stats) gpu::computeWritesVisibleTo(cmd, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
 }
 
 }  // namespace dvsgi::vxgi

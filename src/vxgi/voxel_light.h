@@ -26,14 +26,26 @@ enum class Occlusion : uint32_t {
     PerLight = shader::OCCLUSION_PER_LIGHT,
 };
 
+// How the voxel bounces are iterated.
+enum class BounceMode {
+    Fixed,     // exactly `bounces` bounces every frame (the paper: 1)
+    Converge,  // the first frame iterates until the relative change of voxel radiance
+               // falls below `convergence` (at most `maxBounces`), later frames feed back
+    Feedback,  // one bounce per frame reading the previous frame's filtered radiance
+};
+
 struct VoxelLightSettings {
     bool normalWeighted = true;           // eq. 5 (else Lambert N.L, eq. 2)
     Occlusion occlusion = Occlusion::PerLight;  // global override of each light's mode
     float softKappa = 0.5f;               // soft raycast: nu += (1 - nu) * kappa / t
     float shadowNormalOffset = 1.5f;      // texels
-    uint32_t bounces = 1;                 // extra bounces per voxel (0 = direct only)
+    BounceMode bounceMode = BounceMode::Converge;
+    uint32_t bounces = 1;                 // Fixed: bounces per frame (0 = direct only)
+    float convergence = 0.005f;           // Converge: stop when sum|dY| / sum Y over voxels is below this
+    uint32_t maxBounces = 64;             // Converge: give up (and say so) after this many
     // beta, min step, max distance, first sample; clearance and surface thickness
-    shader::ConeParams bounceCone{glm::vec4(1.0f, 0.5f, 1e30f, 1.0f), glm::vec4(shader::CONE_CLEARANCE_DEFAULT, shader::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
+    shader::ConeParams bounceCone{glm::vec4(1.0f, 0.5f, 1e30f, 1.0f),
+                                  glm::vec4(shader::CONE_CLEARANCE_DEFAULT, shader::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
 };
 
 struct ShadowInputs {
@@ -72,14 +84,18 @@ private:
 class BouncePass {
 public:
     explicit BouncePass(const gpu::Context& ctx);
+    // `stats` (optional, statsFloats(N) floats, host-visible): per-workgroup
+    // sums of |luminance change| and luminance over occupied voxels.
     void record(VkCommandBuffer cmd, const VoxelVolumes& volumes, const gpu::Image& direct,
-                const VoxelLightSettings& settings, gpu::GpuTimers* timers) const;
+                const VoxelLightSettings& settings, const gpu::Buffer* stats, gpu::GpuTimers* timers) const;
     const gpu::Sampler& sampler() const { return sampler_; }
+    static uint32_t statsFloats(uint32_t n);
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
     gpu::Sampler sampler_;  // trilinear + mips, clamped to the grid's edge
+    gpu::Buffer noStats_;
 };
 
 }  // namespace dvsgi::vxgi

@@ -19,6 +19,7 @@ render::RenderSettings settings(uint32_t size, uint32_t voxels, uint32_t term) {
     s.shadowMapSize = 512;
     s.voxels = voxels;
     s.outputTerm = term;
+    s.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     s.voxelLight.bounces = 0;
     return s;
 }
@@ -75,6 +76,7 @@ TEST_F(ConeTracing, NoLightGivesNoIndirectLight) {
     addClosedBox(s, addMaterial(s, glm::vec3(0.8f)), 1.0f);
     addTopDownCamera(s, 0.5f, glm::radians(50.0f));
     render::RenderSettings rs = settings(16, 32, sh::TERM_FULL);
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 2;
     const image::ImageRGBA32F img = render(s, rs);
     for (float v : img.rgba) ASSERT_EQ(v == 1.0f ? 0.0f : v, 0.0f);  // alpha is 1; colours must be 0
@@ -139,6 +141,7 @@ TEST_F(ConeTracing, LoneLitPlaneGetsNoIndirectLight) {
     // plane; K = 2 leaves some (the measured table is in docs/quality.md).
     for (float clearance : {sh::CONE_CLEARANCE_DEFAULT, 2.0f}) {
         render::RenderSettings rs = settings(32, 32, sh::TERM_DIRECT);
+        rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
         rs.voxelLight.bounces = 2;
         rs.gather.clearance = clearance;
         rs.voxelLight.bounceCone.surface.x = clearance;

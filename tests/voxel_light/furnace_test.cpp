@@ -89,6 +89,7 @@ TEST_F(Furnace, BouncesApproachTheGeometricSeries) {
         rs.hasVoxelBox = true;
         rs.voxelBoxMin = glm::vec3(-1.0f);
         rs.voxelBoxMax = glm::vec3(1.0f);
+        rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
         rs.voxelLight.bounces = k;
         render::Renderer r(context(), s, rs);
         r.renderFrame();
@@ -128,6 +129,7 @@ TEST_F(Furnace, NoBouncesIsEmissionEverywhere) {
     rs.hasVoxelBox = true;
     rs.voxelBoxMin = glm::vec3(-1.0f);
     rs.voxelBoxMax = glm::vec3(1.0f);
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
     render::Renderer r(context(), furnace(), rs);
     r.renderFrame();

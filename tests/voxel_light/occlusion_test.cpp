@@ -56,6 +56,7 @@ render::RenderSettings settings(vxgi::Occlusion mode) {
     rs.hasVoxelBox = true;
     rs.voxelBoxMin = glm::vec3(-kBox);
     rs.voxelBoxMax = glm::vec3(kBox);
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
     rs.voxelLight.occlusion = mode;
     rs.voxelLight.softKappa = 0.5f;

@@ -34,6 +34,7 @@ TEST_F(AlphaMask, CutOutHalfLeavesNoVoxels) {
     rs.hasVoxelBox = true;
     rs.voxelBoxMin = glm::vec3(-1.0f);
     rs.voxelBoxMax = glm::vec3(1.0f);
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
     render::Renderer r(context(), s, rs);
     r.renderFrame();

@@ -1,0 +1,123 @@
+// Converged and feedback bounces (--bounces auto). In a closed box of albedo
+// rho and emission L every wall converges to L / (1 - rho t), t the fraction
+// of light one bounce carries; with rho = 0.9 ten bounces still leave a third
+// of the light missing, so this checks that iterating to convergence reaches
+// the infinite series. A light switched off must leave no lasting indirect
+// light under feedback.
+#include <cmath>
+#include <cstdio>
+
+#include "gpu_fixture.h"
+#include "light_helpers.h"
+#include "vxgi/voxel_light.h"
+
+namespace dvsgi::test {
+namespace {
+
+constexpr uint32_t kN = 32;
+constexpr float kHalf = 0.90625f;  // walls in the middle of voxel layers 1 and 30 of [-1, 1]^3
+constexpr int kLow = 1, kHigh = 30, kInnerLo = 8, kInnerHi = 23;
+
+render::RenderSettings boxSettings() {
+    render::RenderSettings rs;
+    rs.width = rs.height = 8;
+    rs.shadowMapSize = 256;
+    rs.voxels = kN;
+    rs.hasVoxelBox = true;
+    rs.voxelBoxMin = glm::vec3(-1.0f);
+    rs.voxelBoxMax = glm::vec3(1.0f);
+    return rs;
+}
+
+// Mean of one channel over the wall voxels away from edges, all six walls.
+double wallMean(const Rgba16Volume& v, int channel = 0) {
+    double sum = 0.0;
+    int count = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int layer : {kLow, kHigh})
+            for (int a = kInnerLo; a <= kInnerHi; ++a)
+                for (int b = kInnerLo; b <= kInnerHi; ++b) {
+                    glm::ivec3 p;
+                    p[axis] = layer;
+                    p[(axis + 1) % 3] = a;
+                    p[(axis + 2) % 3] = b;
+                    sum += v.at(p.x, p.y, p.z)[channel];
+                    ++count;
+                }
+    return sum / count;
+}
+
+class Converge : public GpuTest {};
+
+TEST_F(Converge, ClosedFurnaceReachesTheInfiniteSeriesOfItsTransport) {
+    constexpr float kRho = 0.9f, kL = 1.0f;
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf);
+    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    // One bounce measures what fraction t of the light a bounce carries here
+    // (L + rho t L); converging must then reach the series' limit L / (1 - rho t).
+    render::RenderSettings one = boxSettings();
+    one.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    one.voxelLight.bounces = 1;
+    render::Renderer r1(context(), s, one);
+    r1.renderFrame();
+    const double t = (wallMean(readRgba16(r1.volumes()->radiance)) / kL - 1.0) / kRho;
+
+    render::RenderSettings rs = boxSettings();
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Converge;
+    rs.voxelLight.convergence = 0.002f;
+    rs.voxelLight.maxBounces = 200;
+    render::Renderer r(context(), s, rs);
+    const render::FrameStats st = r.renderFrame();
+    const double limit = kL / (1.0 - kRho * t), exact = kL / (1.0 - kRho);
+    const double got = wallMean(readRgba16(r.volumes()->radiance));
+    std::printf("  one bounce carries t = %.4f; %u bounces, last change %.2e: wall mean %.4f, limit L/(1-rho t) %.4f "
+                "(%+.2f%%), exact L/(1-rho) %.4f (%+.2f%%)\n",
+                t, st.bounces, st.bounceChange, got, limit, 100.0 * (got / limit - 1.0), exact,
+                100.0 * (got / exact - 1.0));
+    EXPECT_TRUE(st.converged);
+    EXPECT_GT(st.bounces, 15u);  // (rho t)^15 < 0.15: far from converged before that
+    EXPECT_NEAR(got / limit, 1.0, 0.01);
+    // Measured: t = 0.966 (a bounce loses 3.4 % through the walls' partly
+    // covered coarse cells), so the converged wall is 23 % below L / (1 - rho);
+    // docs/quality.md. Guard against it getting worse.
+    EXPECT_GT(t, 0.95);
+}
+
+TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
+    constexpr float kRho = 0.5f;
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(kRho)), glm::vec3(0.0f), kHalf);
+    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    scene::Light light;
+    light.name = "lamp";
+    light.type = scene::LightType::Point;
+    light.intensity = 1.0f;
+    addLight(s, light, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, -1, 0));
+    render::RenderSettings rs = boxSettings();
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
+    render::Renderer r(context(), s, rs);
+    // Feedback: frame k holds k - 1 bounces; 20 frames are converged for rho = 0.5.
+    for (int f = 0; f < 20; ++f) r.renderFrame();
+    const double lit = wallMean(readRgba16(r.volumes()->radiance));
+    const double indirect = lit - wallMean(readRgba16(r.injectPass()->direct));
+    ASSERT_GT(indirect, 0.05 * lit);
+    r.scene().lights[0].intensity = 0.0f;
+    r.sceneChanged();
+    // Each frame keeps what one bounce returns of the last: about rho times it
+    // in a closed box, so 1 % is reached after ln(0.01) / ln(rho) = 6.6 frames.
+    constexpr int kFrames = 10;
+    int frames = 0;
+    double left = indirect;
+    while (frames < kFrames && left >= 0.01 * indirect) {
+        r.renderFrame();
+        ++frames;
+        left = wallMean(readRgba16(r.volumes()->radiance));
+    }
+    std::printf("  indirect %.5f with the light on; below 1 %% after %d frame(s) off (%.2e left)\n", indirect, frames,
+                left);
+    EXPECT_LT(left, 0.01 * indirect) << "after " << kFrames << " frames";
+}
+
+}  // namespace
+}  // namespace dvsgi::test
