@@ -161,6 +161,8 @@ struct ExrInput {
     MemoryIStream stream;
     Imf::InputFile file;
 
+    // The comma runs checkHeaders before InputFile's constructor, which is
+    // where OpenEXR first sizes buffers from the header.
     explicit ExrInput(const std::string& path)
         : bytes(detail::readFileBytes(path)), stream(path, bytes),
           file((checkHeaders(path, stream), stream)) {
