@@ -1,9 +1,6 @@
-// Linear RGBA float images: OpenEXR in/out, an 8-bit sRGB PNG preview, box
-// downsampling and the reference-comparison metrics of /work/shared/tools.
-//
-// The EXR code is a deliberately small, self-contained subset of OpenEXR 2.0
-// (single-part scanline files only) so the renderer does not depend on the
-// OpenEXR library; OpenImageIO is used by the tests to check compatibility.
+// Linear RGBA float images: OpenEXR in/out (through the OpenEXR library), an
+// 8-bit sRGB PNG preview, box downsampling and the reference-comparison
+// metrics of /work/shared/tools.
 #pragma once
 
 #include <cstddef>
@@ -35,17 +32,69 @@ struct IoError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Writes a single-part scanline OpenEXR file with FLOAT channels B, G, R (alpha
-// is dropped: frames are opaque radiance), ZIP compression (16 lines per
-// chunk; a chunk that would not shrink is stored raw, as the format allows),
-// INCREASING_Y. Creates missing parent directories.
-void writeExr(const std::string& path, const ImageRGBA32F& img);
+// Sample type of the channels an EXR writer stores. Images are float in
+// memory either way; HALF halves the file at 11 significant bits and a range
+// of ±65504 (larger values become ±infinity).
+enum class PixelType { Float, Half };
 
-// Reads a single-part scanline OpenEXR file with NO_COMPRESSION, ZIPS or ZIP
-// compression and HALF, FLOAT or UINT channels. R, G, B are required; A
-// defaults to 1; other channels are ignored. The result covers the data
-// window. Anything else, or any inconsistency in the file, throws IoError.
+struct ExrOptions {
+    PixelType type = PixelType::Float;
+    bool alpha = false;  // also store A (frames are opaque radiance, so off by default)
+};
+
+// Every EXR this module writes is a single-part scanline file with ZIP
+// compression, INCREASING_Y, data and display window (0,0)-(w-1,h-1). It is
+// written to a temporary file beside `path` and renamed over it only when
+// complete, so a failure leaves no partial file (and keeps an older one).
+// Missing parent directories are created.
+
+// Channels R, G, B as FLOAT (alpha is dropped).
+void writeExr(const std::string& path, const ImageRGBA32F& img);
+// Channels R, G, B (and A if options.alpha) as options.type.
+void writeExr(const std::string& path, const ImageRGBA32F& img, const ExrOptions& options);
+
+// Reads any OpenEXR file that the OpenEXR library reads (scanline or tiled,
+// any compression, HALF, FLOAT or UINT samples; the first part of a multi-part
+// file). R, G, B are required; A defaults to 1; other channels are ignored.
+// The result covers the data window. Data windows over 2^28 pixels are
+// rejected from the header, before anything is allocated for them. Any
+// problem (missing, malformed, truncated file) throws IoError.
 ImageRGBA32F readExr(const std::string& path);
+
+// One named layer of a multi-layer (AOV) EXR. Channels are stored as
+// "<name>.<channel>", the convention OpenImageIO, Nuke and Blender use to
+// group channels into layers; an empty name stores the channels unprefixed
+// (the default layer viewers show first). Conventional channel names:
+//   colour terms   "R","G","B" (direct, indirect, specular, albedo; "A" for a 4th)
+//   one scalar     "Y" for a grey value (ao), "Z" for depth
+//   a direction    "X","Y","Z" (normal)
+struct ExrLayer {
+    std::string name;
+    std::vector<std::string> channels;  // 1, 3 or 4 names, none empty or containing '.'
+    // width * height * channels.size() floats, interleaved per pixel in the
+    // order of `channels`, row 0 = top.
+    std::vector<float> pixels;
+};
+
+// Writes all layers into one EXR (see above for the file layout); every
+// channel is stored as `type`. Throws IoError naming the file if the layers
+// are inconsistent (sizes, channel counts, names repeated) or writing fails.
+void writeExrLayers(const std::string& path, uint32_t width, uint32_t height,
+                    const std::vector<ExrLayer>& layers, PixelType type);
+
+// What readExrLayers found: the channels of the file grouped by the text
+// before their last '.', layers sorted by name, a layer's channels in the
+// order R, G, B, A, X, Y, Z, then the rest alphabetically.
+struct ExrLayerFile {
+    uint32_t width = 0, height = 0;  // of the data window
+    std::vector<ExrLayer> layers;
+    std::vector<PixelType> types;  // stored sample type of each layer
+};
+
+// Reads every layer of an EXR written by writeExrLayers (or any file with
+// HALF/FLOAT channels that are not subsampled). Throws IoError as readExr does,
+// and for UINT channels or a layer that mixes HALF and FLOAT.
+ExrLayerFile readExrLayers(const std::string& path);
 
 // Writes an 8-bit RGB sRGB preview (alpha dropped). Per channel:
 //   v = linear * 2^exposureEV, clamped to [0, 1] (NaN -> 0, +Inf -> 1)

@@ -9,6 +9,15 @@
 
 namespace dvsgi::image {
 
+ImageRGBA32F ImageRGBA32F::blank(uint32_t w, uint32_t h) {
+    ImageRGBA32F img;
+    img.width = w;
+    img.height = h;
+    img.rgba.assign(size_t(w) * h * 4, 0.0f);
+    for (size_t i = 3; i < img.rgba.size(); i += 4) img.rgba[i] = 1.0f;
+    return img;
+}
+
 namespace {
 
 constexpr double kLum[3] = {0.2126, 0.7152, 0.0722};

@@ -101,7 +101,8 @@ TEST(Png, WritesPreviewWithExposure) {
 TEST(Png, MatchesReferencePreview) {
     const fs::path refDir = fs::path(DVSGI_SHARED_DIR) / "reference" / "cornell-box";
     const fs::path exr = refDir / "cornell-emissive.exr", png = refDir / "cornell-emissive.png";
-    if (!fs::exists(exr) || !fs::exists(png)) GTEST_SKIP() << "reference images not found";
+    REQUIRE_FILE(exr);
+    REQUIRE_FILE(png);
     const fs::path dir = scratchDir();
     const std::string ours = (dir / "ours.png").string();
     writePng(ours, readExr(exr.string()), 0.0f);
@@ -199,7 +200,7 @@ void makePair(ImageRGBA32F& cand, ImageRGBA32F& ref) {
 TEST(Metrics, MatchCompareTool) {
     REQUIRE_PYTHON_OIIO();
     const fs::path tool = fs::path(DVSGI_SHARED_DIR) / "tools" / "compare.py";
-    if (!fs::exists(tool)) GTEST_SKIP() << tool << " not found";
+    REQUIRE_FILE(tool);
     const fs::path dir = scratchDir();
     ImageRGBA32F cand, ref;
     makePair(cand, ref);
@@ -229,7 +230,7 @@ TEST(Metrics, MatchCompareTool) {
 TEST(Metrics, MatchMaskedRmseTool) {
     REQUIRE_PYTHON_OIIO();
     const fs::path tool = fs::path(DVSGI_SHARED_DIR) / "tools" / "masked_rmse.py";
-    if (!fs::exists(tool)) GTEST_SKIP() << tool << " not found";
+    REQUIRE_FILE(tool);
     const fs::path dir = scratchDir();
     ImageRGBA32F cand, ref;
     makePair(cand, ref);

@@ -4,12 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
+#include <functional>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <vector>
+
+#include "image/image_io.h"
 
 namespace dvsgi::image::test {
 
@@ -91,10 +97,40 @@ inline PyResult runCommand(const std::filesystem::path& dir, const std::string& 
     return r;
 }
 
+inline std::vector<uint8_t> fileBytes(const std::filesystem::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+inline void writeBytes(const std::filesystem::path& p, const std::vector<uint8_t>& b) {
+    std::ofstream f(p, std::ios::binary);
+    f.write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+}
+
+// fn must throw IoError whose message is "<path>: ..." and contains fragment.
+inline void expectIoError(const std::string& path, const std::string& fragment,
+                          const std::function<void()>& fn) {
+    try {
+        fn();
+        ADD_FAILURE() << "no IoError for " << path;
+    } catch (const IoError& e) {
+        const std::string msg = e.what();
+        EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+        EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+    }
+}
+
 }  // namespace dvsgi::image::test
 
+// A missing judge is a failure, not a skip: a skipped check passes unnoticed.
 #define REQUIRE_PYTHON_OIIO()                                                   \
     do {                                                                        \
         if (!::dvsgi::image::test::havePythonOiio())                            \
-            GTEST_SKIP() << "/usr/bin/python3 with OpenImageIO and numpy missing"; \
+            FAIL() << "/usr/bin/python3 with OpenImageIO and numpy missing";    \
+    } while (0)
+
+// The same for input files (shared reference images and tools).
+#define REQUIRE_FILE(path)                                                      \
+    do {                                                                        \
+        if (!std::filesystem::exists(path)) FAIL() << (path) << " not found";   \
     } while (0)
