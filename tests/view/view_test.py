@@ -389,7 +389,7 @@ else:
         if ok:
             venv = dict(env)
             venv["DISPLAY"] = ":%d" % display
-            common = ["--width", "160", "--height", "120", "--voxels", "32", "--validate"]
+            common = ["--width", "160", "--height", "120", "--voxels", "32", "--bounces", "1", "--validate"]
             shot = os.path.join(TMP, "shot.exr")
             rc, out, err = run(["view", *common, "--view-frames", "3", "--screenshot", shot], venv)
             if "no viewer" in err:
