@@ -18,32 +18,16 @@ constexpr uint32_t kN = 32;
 constexpr float kHalf = 0.90625f;  // walls in the middle of voxel layers 1 and 30 of [-1, 1]^3
 constexpr int kLow = 1, kHigh = 30, kInnerLo = 8, kInnerHi = 23;
 
-render::RenderSettings boxSettings() {
-    render::RenderSettings rs;
-    rs.width = rs.height = 8;
-    rs.shadowMapSize = 256;
-    rs.voxels = kN;
-    rs.hasVoxelBox = true;
-    rs.voxelBoxMin = glm::vec3(-1.0f);
-    rs.voxelBoxMax = glm::vec3(1.0f);
-    return rs;
-}
+render::RenderSettings boxSettings() { return unitBoxGridSettings(kN, 256); }
 
 // Mean of one channel over the wall voxels away from edges, all six walls.
 double wallMean(const Rgba16Volume& v, int channel = 0) {
     double sum = 0.0;
     int count = 0;
-    for (int axis = 0; axis < 3; ++axis)
-        for (int layer : {kLow, kHigh})
-            for (int a = kInnerLo; a <= kInnerHi; ++a)
-                for (int b = kInnerLo; b <= kInnerHi; ++b) {
-                    glm::ivec3 p;
-                    p[axis] = layer;
-                    p[(axis + 1) % 3] = a;
-                    p[(axis + 2) % 3] = b;
-                    sum += v.at(p.x, p.y, p.z)[channel];
-                    ++count;
-                }
+    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 p) {
+        sum += v.at(p.x, p.y, p.z)[channel];
+        ++count;
+    });
     return sum / count;
 }
 

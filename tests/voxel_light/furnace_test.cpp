@@ -47,16 +47,7 @@ struct WallStats {
 // Every wall voxel away from the edges, on all six walls.
 template <typename F>
 void forWallVoxels(F&& f) {
-    for (int axis = 0; axis < 3; ++axis)
-        for (int layer : {kLow, kHigh})
-            for (int a = kInnerLo; a <= kInnerHi; ++a)
-                for (int b = kInnerLo; b <= kInnerHi; ++b) {
-                    glm::ivec3 v;
-                    v[axis] = layer;
-                    v[(axis + 1) % 3] = a;
-                    v[(axis + 2) % 3] = b;
-                    f(v);
-                }
+    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, f);
 }
 
 WallStats measure(const Rgba16Volume& radiance, double want) {
@@ -82,13 +73,7 @@ TEST_F(Furnace, BouncesApproachTheGeometricSeries) {
     double want = 0.0, term = kL, previousMean = 0.0, previousStep = 0.0;
     for (uint32_t k = 0; k <= 3; ++k, term *= kRho) {
         want += term;
-        render::RenderSettings rs;
-        rs.width = rs.height = 8;
-        rs.shadowMapSize = 64;
-        rs.voxels = kN;
-        rs.hasVoxelBox = true;
-        rs.voxelBoxMin = glm::vec3(-1.0f);
-        rs.voxelBoxMax = glm::vec3(1.0f);
+        render::RenderSettings rs = unitBoxGridSettings(kN);
         rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
         rs.voxelLight.bounces = k;
         render::Renderer r(context(), s, rs);
@@ -122,13 +107,7 @@ TEST_F(Furnace, BouncesApproachTheGeometricSeries) {
 // With no lights and no bounces every occupied voxel, corners included, holds
 // its emission and nothing else; empty voxels stay black and transparent.
 TEST_F(Furnace, NoBouncesIsEmissionEverywhere) {
-    render::RenderSettings rs;
-    rs.width = rs.height = 8;
-    rs.shadowMapSize = 64;
-    rs.voxels = 16;
-    rs.hasVoxelBox = true;
-    rs.voxelBoxMin = glm::vec3(-1.0f);
-    rs.voxelBoxMax = glm::vec3(1.0f);
+    render::RenderSettings rs = unitBoxGridSettings(16);
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
     render::Renderer r(context(), furnace(), rs);

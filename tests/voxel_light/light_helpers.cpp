@@ -77,4 +77,15 @@ void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h) {
     }
 }
 
+render::RenderSettings unitBoxGridSettings(uint32_t n, uint32_t shadowMapSize) {
+    render::RenderSettings rs;
+    rs.width = rs.height = 8;
+    rs.shadowMapSize = shadowMapSize;
+    rs.voxels = n;
+    rs.hasVoxelBox = true;
+    rs.voxelBoxMin = glm::vec3(-1.0f);
+    rs.voxelBoxMax = glm::vec3(1.0f);
+    return rs;
+}
+
 }  // namespace dvsgi::test

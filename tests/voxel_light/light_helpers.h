@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/resources.h"
+#include "render/renderer.h"
 #include "scene/scene.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
@@ -58,6 +59,26 @@ struct UnusedShadowMap {
     gpu::Image map;  // D32, 2 layers, in SHADER_READ_ONLY_OPTIMAL
     gpu::Sampler sampler;
 };
+
+// Calls f(glm::ivec3) for each voxel of a box's six walls, which lie in voxel
+// layers `low` and `high` of their axis, within innerLo..innerHi on the other
+// two axes (so edges and corners, which mix two walls, can be left out).
+template <typename F>
+void forEachWallVoxel(int low, int high, int innerLo, int innerHi, F&& f) {
+    for (int axis = 0; axis < 3; ++axis)
+        for (int layer : {low, high})
+            for (int a = innerLo; a <= innerHi; ++a)
+                for (int b = innerLo; b <= innerHi; ++b) {
+                    glm::ivec3 v;
+                    v[axis] = layer;
+                    v[(axis + 1) % 3] = a;
+                    v[(axis + 2) % 3] = b;
+                    f(v);
+                }
+}
+
+// An 8x8 image over an N^3 grid on the box [-1, 1]^3 (the furnace tests).
+render::RenderSettings unitBoxGridSettings(uint32_t n, uint32_t shadowMapSize = 64);
 
 // Six inward-facing quads (addQuad) of half-size h around `center`.
 void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h);
