@@ -197,6 +197,15 @@ const std::vector<OptionSpec>& optionSpecs() {
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.bounceConvergence = parseFloat(opt, v, 1e-5f, 0.5f, "a relative change in 0.00001..0.5");
          }},
+        {"--emitters", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "lights" && v != "cones") badValue(opt, "lights or cones", v);
+             o.emitterLights = v == "lights";
+         }},
+        {"--emitter-patches", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.emitterPatches = uint32_t(parseUnsigned(opt, v, 1, 1024, "an integer in 1..1024"));
+         }},
         {"--max-bounces", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              o.maxBounces = uint32_t(parseUnsigned(opt, v, 1, 1000, "an integer in 1..1000"));
@@ -503,6 +512,12 @@ std::string usageText() {
            "                       to the RGBA16F rounding noise (5e-4)\n"
            "  --max-bounces M      converging stops after M bounces even if not converged, and\n"
            "                       says so (default 64)\n"
+           "  --emitters lights|cones  emissive surfaces lit as area lights (default lights: their\n"
+           "                       triangles become --emitter-patches patches, evaluated at voxels\n"
+           "                       and pixels with voxel visibility) or only gathered by the cones\n"
+           "                       (the paper; small emitters are under-sampled). Emissive textures\n"
+           "                       always use the cones\n"
+           "  --emitter-patches N  area-light patches for all emitters, 1..1024 (default 64)\n"
            "  --normal-weighted on|off  normal-weighted attenuation (paper eq. 5, default on)\n"
            "                       or plain Lambert N.L with the averaged normal (eq. 2)\n"
            "  --voxel-occlusion M  occlusion of lights at voxels for all lights: shadowmap,\n"

@@ -43,6 +43,8 @@ struct RenderOptions {
     uint32_t bounces = 1;            // --bounces K: exactly K bounces per frame
     float bounceConvergence = 0.005f;  // relative change of voxel radiance that ends converging
     uint32_t maxBounces = 64;        // converging gives up after this many bounces
+    bool emitterLights = true;       // --emitters lights|cones
+    uint32_t emitterPatches = 64;    // --emitter-patches N
     bool normalWeighted = true;      // eq. 5 (on) or Lambert N.L (off)
     std::string voxelOcclusion = "per-light";  // shadowmap|raycast|soft|none|per-light
     std::vector<std::pair<std::string, std::string>> lightOcclusion;  // NAME=mode

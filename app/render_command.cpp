@@ -123,6 +123,7 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
     j["triangles"] = renderer.triangleCount();
     j["lights"] = scene.lights.size();
     j["gpu_ms"] = stats.gpuMs;
+    j["emitter_patches"] = renderer.emitterPatchCount();
     // The first frame is the one that converges (--bounces auto); later ones feed back.
     j["bounces"] = {{"first_frame", first.bounces},
                     {"first_frame_change", first.bounceChange},
@@ -157,6 +158,8 @@ nlohmann::json parametersJson(const RenderOptions& o) {
                        {"bounces", o.bouncesAuto ? nlohmann::json("auto") : nlohmann::json(o.bounces)},
                        {"bounce_convergence", o.bounceConvergence},
                        {"max_bounces", o.maxBounces},
+                       {"emitters", o.emitterLights ? "lights" : "cones"},
+                       {"emitter_patches", o.emitterPatches},
                        {"normal_weighted", o.normalWeighted},
                        {"voxel_occlusion", o.voxelOcclusion},
                        {"soft_kappa", o.softKappa},
@@ -204,6 +207,8 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.voxelLight.bounces = o.bounces;
     rs.voxelLight.convergence = o.bounceConvergence;
     rs.voxelLight.maxBounces = o.maxBounces;
+    rs.emitterLights = o.emitterLights;
+    rs.emitterPatches = o.emitterPatches;
     rs.voxelLight.normalWeighted = o.normalWeighted;
     rs.voxelLight.softKappa = o.softKappa;
     rs.voxelLight.occlusion = occlusionMode(o.voxelOcclusion);

@@ -204,6 +204,8 @@ ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer
         r |= sliderU("view direction", o.viewDirection, 0, 5);
         r |= ImGui::Checkbox("bounces: feedback (one per frame)", &o.bouncesAuto);
         if (!o.bouncesAuto) r |= sliderU("bounces per frame", o.bounces, 0, 16);
+        r |= ImGui::Checkbox("emitters as area lights", &o.emitterLights);
+        r |= sliderU("emitter patches", o.emitterPatches, 1, 256);
         r |= onOff("normal-weighted", o.normalWeighted);
         r |= comboString("voxel occlusion", o.voxelOcclusion, {"per-light", "shadowmap", "raycast", "soft", "none"});
         r |= sliderF("soft kappa", o.softKappa, 0.0f, 4.0f);

@@ -40,7 +40,9 @@ void main() {
     // Lit position: the voxel centre pushed half a voxel along its normal.
     vec3 P = grid.originSize.xyz + (vec3(v) + 0.5) * s + n * (0.5 * s);
 
-    vec3 radiance = voxelEmission(v);
+    // Emitters lit explicitly (as LIGHT_AREA patches) keep their emission out
+    // of the radiance that cones gather, or it would be counted twice.
+    vec3 radiance = pc.params.z > 0.5 ? voxelEmission(v) : vec3(0.0);
     for (uint i = 0u; i < pc.flags.x; ++i) {
         GpuLight light = lights[i];
         vec3 L;
@@ -52,6 +54,10 @@ void main() {
         float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : max(dot(n, L), 0.0);
         if (att <= 0.0 || all(equal(E, vec3(0.0)))) continue;
         uint mode = pc.flags.z != OCCLUSION_PER_LIGHT ? pc.flags.z : light.shadow.z;
+        bool area = uint(light.position.w) == LIGHT_AREA;
+        // Patches have no shadow maps; their rays stop short of the emitter's own voxels.
+        if (area && mode == OCCLUSION_SHADOW_MAP) mode = OCCLUSION_RAYCAST_HARD;
+        if (area) dist -= 2.0 * s / max(abs(dot(light.direction.xyz, L)), 0.2);
         float vis = 1.0;
         if (mode == OCCLUSION_SHADOW_MAP && pc.flags.w != 0u)
             vis = shadowVisibility(light, P, n, pc.params.y);

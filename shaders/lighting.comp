@@ -44,6 +44,21 @@ float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p).a;
 }
 
+float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
+    ConeParams p = pc.cone;
+    float s = grid.originSize.w;
+    float tanHalf = max(radius / dist, pc.shadow.y);
+    // Stop where the last sample's footprint (a cell, or the cone's diameter
+    // there, on each side) still misses the emitter's own voxel layer, which a
+    // cone arriving obliquely crosses for longer.
+    float footprint = 2.0 * max(s, 2.0 * dist * tanHalf) + s;
+    float cosE = max(abs(dot(emitterNormal, L)), 0.2);
+    p.trace.z = min(dist - footprint / cosE, 2.0 * s * float(grid.dims.x));
+    if (p.trace.z <= 0.0) return 1.0;
+    float originHeight = pc.shadow.z * s;
+    return 1.0 - traceCone(P + N * originHeight, N, originHeight, L, tanHalf, p).a;
+}
+
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(px), frame.sizes.xy))) return;
@@ -70,7 +85,11 @@ void main() {
         vec3 E = lightIrradiance(lights[i], P, L, dist);
         if (dot(N, L) <= 0.0 || all(equal(E, vec3(0.0)))) continue;
         float vis = 1.0;
-        if (pc.shadow.x > 0.5)
+        if (uint(lights[i].position.w) == LIGHT_AREA) {
+            // No shadow map for a patch: a cone as wide as the patch looks
+            // from here, stopping short of the emitter's own voxels.
+            vis = areaVisibility(P, N, L, dist, sqrt(lights[i].radiant.w), lights[i].direction.xyz);
+        } else if (pc.shadow.x > 0.5)
             vis = coneVisibility(P, N, L, dist);
         else if (frame.shadowParams.y > 0.5)
             vis = shadowVisibility(lights[i], P, N, frame.shadowParams.x);

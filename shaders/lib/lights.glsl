@@ -14,6 +14,13 @@ vec3 lightIrradiance(GpuLight light, vec3 P, out vec3 L, out float dist) {
     float d2 = max(dot(toLight, toLight), 1e-12);
     dist = sqrt(d2);
     L = toLight / dist;
+    if (type == LIGHT_AREA) {
+        // Lambertian patch: I = L A cos(theta_e), and a disk of the patch's
+        // area in the near field (exact on a disk's axis: pi L r^2 / (d^2 + r^2)).
+        float c = dot(light.direction.xyz, -L);
+        c = light.direction.w > 0.5 ? abs(c) : max(c, 0.0);
+        return light.radiant.rgb * (c / (d2 + light.radiant.w));
+    }
     vec3 E = light.radiant.rgb / d2;  // I / d^2
     if (type == LIGHT_SPOT) {
         // KHR_lights_punctual reference falloff, squared as CONVENTIONS.md states.

@@ -18,6 +18,10 @@ DVSGI_CONST(uint, ALPHA_BLEND, 2);
 DVSGI_CONST(uint, LIGHT_DIRECTIONAL, 0);
 DVSGI_CONST(uint, LIGHT_POINT, 1);
 DVSGI_CONST(uint, LIGHT_SPOT, 2);
+// An emissive patch (render/emitters.h): position = centroid, direction.xyz =
+// the side it emits toward (w = 1: both sides), radiant.rgb = radiance x area
+// (W/sr at normal incidence), radiant.w = area / pi (the near-field disk r^2).
+DVSGI_CONST(uint, LIGHT_AREA, 3);
 
 struct GpuMaterial {
     vec4 baseColor;   // linear factor, a = alpha

@@ -72,7 +72,8 @@ DVSGI_CONST(uint, OCCLUSION_PER_LIGHT, 4);  // no override
 struct VoxelLightPush {
     uvec4 flags;   // x light count, y 1 = normal-weighted attenuation (eq. 5), 0 = Lambert N.L (eq. 2),
                    // z occlusion override (OCCLUSION_*), w shadows rendered (1/0)
-    vec4 params;   // x soft-shadow kappa, y shadow-map normal offset (texels)
+    vec4 params;   // x soft-shadow kappa, y shadow-map normal offset (texels), z 1 = add emission to the
+                   // radiance (0 when emitters are area lights)
 };
 DVSGI_CHECK_SIZE(VoxelLightPush, 32);
 

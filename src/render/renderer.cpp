@@ -11,6 +11,7 @@
 #include "gpu/context.h"
 #include "gpu/transfer.h"
 #include "render/composite.h"
+#include "render/emitters.h"
 #include "render/gbuffer.h"
 #include "render/lighting.h"
 #include "render/scene_gpu.h"
@@ -70,11 +71,11 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     const uint32_t bounceScopes = 3 * std::max({settings.voxelLight.maxBounces, settings.voxelLight.bounces, 1u});
     timers_ = std::make_unique<gpu::GpuTimers>(ctx, 64 + bounceScopes);
     gather_ = std::make_unique<GatherPass>(ctx, iw, ih, settings.gather.traceScale);
-    // Clamp to edge, not to a transparent border: a border would halve the
-    // opacity of walls on the grid's edge and cones would leave the grid
-    // before becoming opaque (energy lost). Cones stop at the grid's edge.
+    // Outside the grid is empty: a transparent border, so coarse cells on the
+    // grid's edge fade into nothing instead of repeating themselves beyond it.
     gpu::SamplerDesc vs;
-    vs.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    vs.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+    vs.transparentBorder = true;
     volumeSampler_ = gpu::Sampler(ctx, vs);
     if (settings.voxels == 0) {
         // The lighting pass always binds voxel volumes; without voxels it gets
@@ -104,6 +105,19 @@ void Renderer::uploadLights() {
     for (size_t i = 0; i < placed.size(); ++i)
         for (const auto& [name, mode] : settings_.lightOcclusion)
             if (placed[i].light.name == name) setup.lights[i].shadow.z = uint32_t(mode);
+    patchCount_ = 0;
+    settings_.voxelLight.emissionInRadiance = true;
+    if (settings_.emitterLights && settings_.voxels > 0) {
+        const EmitterPatches patches =
+            emitterPatches(scene_, scene::drawItems(scene_, world), settings_.emitterPatches);
+        if (patches.complete) {
+            setup.lights.insert(setup.lights.end(), patches.lights.begin(), patches.lights.end());
+            patchCount_ = uint32_t(patches.lights.size());
+            settings_.voxelLight.emissionInRadiance = patchCount_ == 0;
+        } else if (warnings_.empty() || warnings_.back().find("emissive texture") == std::string::npos) {
+            warnings_.push_back("an emissive texture cannot be lit as area lights; cones gather the emission");
+        }
+    }
     const VkDeviceSize lightBytes = setup.lights.size() * sizeof(sh::GpuLight);
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
     if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {

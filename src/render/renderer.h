@@ -46,6 +46,10 @@ struct RenderSettings {
     ShadowConeSettings shadowCones;  // cones instead of shadow maps for direct light
     uint32_t outputTerm = 0;         // shader::TERM_* (full, direct, indirect, specular, ao, shadow)
     bool applyAO = false;            // multiply the indirect terms by the cone AO
+    // Emissive surfaces as area-light patches (render/emitters.h) at voxels and
+    // pixels, their emission then left out of the cone-gathered radiance.
+    bool emitterLights = true;
+    uint32_t emitterPatches = 64;
 };
 
 struct FrameStats {
@@ -108,6 +112,7 @@ public:
     const scene::PlacedCamera& camera() const { return camera_; }
     const std::vector<std::string>& warnings() const { return warnings_; }
     uint64_t triangleCount() const;
+    uint32_t emitterPatchCount() const { return patchCount_; }
 
 private:
     void updateFrameConstants();
@@ -123,7 +128,7 @@ private:
     RenderSettings settings_;
     scene::PlacedCamera camera_;
     std::vector<std::string> warnings_;
-    uint32_t lightCount_ = 0, viewCount_ = 0;
+    uint32_t lightCount_ = 0, viewCount_ = 0, patchCount_ = 0;
     std::unique_ptr<SceneGpu> sceneGpu_;
     std::unique_ptr<gpu::Buffer> frame_, lights_, views_;
     std::unique_ptr<ShadowPass> shadows_;

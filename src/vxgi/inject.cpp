@@ -60,7 +60,7 @@ void InjectPass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const Shadow
     const sh::VoxelLightPush push{
         glm::uvec4(s.lightCount, settings.normalWeighted ? 1u : 0u, uint32_t(settings.occlusion),
                    s.shadowsRendered ? 1u : 0u),
-        glm::vec4(settings.softKappa, settings.shadowNormalOffset, 0.0f, 0.0f)};
+        glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f, 0.0f)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     const uint32_t groups = gpu::groupCount(v.grid.n, 4);
     vkCmdDispatch(cmd, groups, groups, groups);

@@ -15,8 +15,8 @@ namespace dvsgi::test {
 namespace {
 
 constexpr uint32_t kN = 32;
-constexpr float kHalf = 0.90625f;  // walls in the middle of voxel layers 1 and 30 of [-1, 1]^3
-constexpr int kLow = 1, kHigh = 30, kInnerLo = 8, kInnerHi = 23;
+constexpr float kHalf = 0.71875f;  // walls in the middle of voxel layers 4 and 27 of [-1, 1]^3
+constexpr int kLow = 4, kHigh = 27, kInnerLo = 10, kInnerHi = 21;
 
 render::RenderSettings boxSettings() { return unitBoxGridSettings(kN, 256); }
 
@@ -62,10 +62,10 @@ TEST_F(Converge, ClosedFurnaceReachesTheInfiniteSeriesOfItsTransport) {
     EXPECT_TRUE(st.converged);
     EXPECT_GT(st.bounces, 15u);  // (rho t)^15 < 0.15: far from converged before that
     EXPECT_NEAR(got / limit, 1.0, 0.01);
-    // Measured: t = 0.966 (a bounce loses 3.4 % through the walls' partly
-    // covered coarse cells), so the converged wall is 23 % below L / (1 - rho);
-    // docs/quality.md. Guard against it getting worse.
-    EXPECT_GT(t, 0.95);
+    // Measured: t = 0.871 (a bounce loses 13 % through coarse cells that
+    // straddle a wall and the empty margin behind it), so the converged wall
+    // is 53 % below L / (1 - rho); docs/quality.md. Guard against it getting worse.
+    EXPECT_GT(t, 0.85);
 }
 
 TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {

@@ -85,6 +85,9 @@ render::RenderSettings unitBoxGridSettings(uint32_t n, uint32_t shadowMapSize) {
     rs.hasVoxelBox = true;
     rs.voxelBoxMin = glm::vec3(-1.0f);
     rs.voxelBoxMax = glm::vec3(1.0f);
+    // The furnace walls emit: keep their emission in the voxels, where the
+    // bounces under test carry it, instead of lighting them as area lights.
+    rs.emitterLights = false;
     return rs;
 }
 
