@@ -281,6 +281,7 @@ Context::Context(const ContextOptions& options) {
     on.features.fragmentStoresAndAtomics = VK_TRUE;
     on.features.vertexPipelineStoresAndAtomics = VK_TRUE;
     on.features.samplerAnisotropy = f2.features.samplerAnisotropy;
+    features.samplerAnisotropy = f2.features.samplerAnisotropy;
     on.features.multiDrawIndirect = f2.features.multiDrawIndirect;
 
     const float priority = 1.0f;
@@ -320,6 +321,7 @@ Context::Context(const ExternalDevice& external, const ContextOptions& options) 
                        VK_ERROR_FEATURE_NOT_PRESENT);
     features.atomicFloat = external.shaderImageFloat32AtomicAdd;
     features.conservativeRaster = external.conservativeRasterization;
+    features.samplerAnisotropy = external.samplerAnisotropy;
     if (external.debugUtils) createMessenger();
     finishSetup(options);
 }

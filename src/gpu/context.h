@@ -33,6 +33,7 @@ struct ExternalDevice {
     // features cannot be queried, so the caller states them.
     bool shaderImageFloat32AtomicAdd = false;  // VK_EXT_shader_atomic_float (voxels need it)
     bool conservativeRasterization = false;    // VK_EXT_conservative_rasterization
+    bool samplerAnisotropy = false;            // textures are sampled anisotropically only then
     // The instance has VK_EXT_debug_utils enabled: the Context then installs its
     // own messenger and counts validation messages as it does for its own instance.
     bool debugUtils = false;
@@ -41,6 +42,7 @@ struct ExternalDevice {
 struct DeviceFeatures {
     bool conservativeRaster = false;  // VK_EXT_conservative_rasterization
     bool atomicFloat = false;         // shaderImageFloat32AtomicAdd
+    bool samplerAnisotropy = false;   // enabled on the device; samplers use anisotropy only then
 };
 
 class Context {
