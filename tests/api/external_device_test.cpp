@@ -359,6 +359,14 @@ TEST_F(AppDevice, ErrorsNameTheSetting) {
     EXPECT_EQ(renderer.settings().traceScale, 1.0f);
     EXPECT_NO_THROW(renderer.render());
     try {
+        dvsgi::DeviceOptions options;
+        options.deviceName = "no-such-gpu";
+        dvsgi::Renderer own(scene, smallSettings(), options);
+        ADD_FAILURE() << "no error for an unknown device name";
+    } catch (const dvsgi::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("DeviceOptions::deviceName"), std::string::npos) << e.what();
+    }
+    try {
         dvsgi::Scene::load("/nonexistent/scene.gltf");
         ADD_FAILURE() << "no error for a missing file";
     } catch (const dvsgi::Error& e) {
