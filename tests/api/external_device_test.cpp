@@ -76,12 +76,22 @@ protected:
         vkEnumeratePhysicalDevices(instance, &n, nullptr);
         std::vector<VkPhysicalDevice> devices(n);
         vkEnumeratePhysicalDevices(instance, &n, devices.data());
+        // The device dvsgi would pick for itself (discrete > integrated > virtual > CPU),
+        // so the comparison with its own device compares one driver with itself.
+        const auto rank = [](VkPhysicalDeviceType t) {
+            return t == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU     ? 4
+                   : t == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU ? 3
+                   : t == VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU    ? 2
+                   : t == VK_PHYSICAL_DEVICE_TYPE_CPU            ? 1
+                                                                 : 0;
+        };
+        int best = -1;
         for (VkPhysicalDevice pd : devices) {
             VkPhysicalDeviceProperties p;
             vkGetPhysicalDeviceProperties(pd, &p);
-            if (p.apiVersion >= VK_API_VERSION_1_3) {
+            if (p.apiVersion >= VK_API_VERSION_1_3 && rank(p.deviceType) > best) {
+                best = rank(p.deviceType);
                 physical = pd;
-                break;
             }
         }
         ASSERT_NE(physical, VK_NULL_HANDLE) << "no Vulkan 1.3 device";
@@ -90,7 +100,10 @@ protected:
         vkGetPhysicalDeviceQueueFamilyProperties(physical, &n, families.data());
         family = UINT32_MAX;
         for (uint32_t i = 0; i < n && family == UINT32_MAX; ++i)
-            if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && families[i].timestampValidBits) family = i;
+            if ((families[i].queueFlags & (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT)) ==
+                    (VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT) &&
+                families[i].timestampValidBits)
+                family = i;
         ASSERT_NE(family, UINT32_MAX);
 
         // Exactly the features dvsgi.h lists for an ExternalDevice.
