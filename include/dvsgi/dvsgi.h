@@ -91,7 +91,8 @@ struct DeviceOptions {
 // and (for voxels > 0) VK_EXT_shader_atomic_float with
 // shaderImageFloat32Atomics and shaderImageFloat32AtomicAdd. dvsgi submits to
 // `queue` and waits for its own fences, so the application must not use the
-// queue from another thread during a dvsgi call.
+// queue from another thread during a dvsgi call; destroying the Renderer
+// waits for that queue to go idle.
 struct ExternalDevice {
     VkInstance instance = VK_NULL_HANDLE;
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
@@ -113,7 +114,8 @@ struct ExternalDevice {
 //   - format VK_FORMAT_R32G32B32A32_SFLOAT at the output size: exact copy
 //     (vkCmdCopyImage); any other size or format: vkCmdBlitImage (linear
 //     filter when the source format allows it), which needs a format with
-//     VK_FORMAT_FEATURE_BLIT_DST_BIT (e.g. R16G16B16A16_SFLOAT, R8G8B8A8_UNORM).
+//     VK_FORMAT_FEATURE_BLIT_DST_BIT (e.g. R16G16B16A16_SFLOAT, R8G8B8A8_UNORM;
+//     values stay linear radiance, which UNORM formats clamp to [0, 1]).
 // Layouts: the image is in `currentLayout` when copyTo is called (UNDEFINED is
 // allowed and discards the contents) and is left in `finalLayout` (not
 // UNDEFINED/PREINITIALIZED). Work the application submitted earlier to the
