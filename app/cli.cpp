@@ -91,6 +91,16 @@ const std::vector<OptionSpec>& optionSpecs() {
              requireExtension(opt, v, ".exr", "a .exr file name");
              o.outExr = v;
          }},
+        {"--aov", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             requireExtension(opt, v, ".exr", "a .exr file name");
+             o.aovExr = v;
+         }},
+        {"--exr-type", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             if (v != "float" && v != "half") badValue(opt, "float or half", v);
+             o.exrHalf = v == "half";
+         }},
         {"--png", true,
          [](RenderOptions& o, std::string_view opt, std::string_view v) {
              if (v != "none") requireExtension(opt, v, ".png", "a .png file name or 'none'");
@@ -469,6 +479,13 @@ std::string usageText() {
            "  --out FILE.exr       output frame (default out/render.exr). OpenEXR, float32 R,G,B:\n"
            "                       linear radiance in W.m^-2.sr^-1 averaged over each pixel's area;\n"
            "                       no exposure, tone mapping or gamma. Missing directories are created.\n"
+           "  --exr-type float|half  sample type of --out and --aov (default float; half keeps\n"
+           "                       11 significant bits, values above 65504 become infinite)\n"
+           "  --aov FILE.exr       also write one multi-layer EXR of the frame's terms at the\n"
+           "                       output size: direct, indirect, specular (R,G,B radiance),\n"
+           "                       ao (Y), albedo (R,G,B base colour), normal (X,Y,Z world),\n"
+           "                       depth (Z, metres along the view axis; inf = no geometry);\n"
+           "                       a '#' run is replaced by the frame number as in --out\n"
            "  --png FILE.png|none  8-bit sRGB preview (default: the --out name with .png);\n"
            "                       'none' writes no preview\n"
            "  --width N            image width in pixels, 1..16384 (default 512)\n"

@@ -28,6 +28,8 @@ struct RenderOptions {
     uint32_t shadowMapSize = 2048;
     uint32_t supersample = 1;     // k: render k*W x k*H and box-filter to W x H
     bool quiet = false;           // no timing table on stdout
+    std::string aovExr;           // multi-layer EXR of every term (--aov); empty = none
+    bool exrHalf = false;         // --exr-type half: --out and --aov store HALF samples
 
     // Voxels (issue #3).
     uint32_t voxels = 128;        // N of the N^3 grid, power of two 32..512; 0 = none

@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/load.h"
+#include "shared/gather_data.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxelize.h"
 
@@ -141,6 +142,31 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
     return j;
 }
 
+// Every term of the frame as named layers of one EXR (channel naming of
+// image::ExrLayer). The radiance terms come from re-running the composite, so
+// each equals what `--output <term>` writes.
+void writeAov(const std::string& path, const render::Renderer& renderer, image::PixelType type) {
+    auto layer = [](const char* name, std::vector<std::string> channels, const image::ImageRGBA32F& img) {
+        image::ExrLayer l{name, std::move(channels), {}};
+        const size_t n = l.channels.size();
+        l.pixels.resize(img.pixelCount() * n);
+        for (size_t p = 0; p < img.pixelCount(); ++p)
+            for (size_t c = 0; c < n; ++c) l.pixels[p * n + c] = img.rgba[p * 4 + c];
+        return l;
+    };
+    const render::Renderer::SurfaceImages surface = renderer.readSurface();
+    const std::vector<image::ExrLayer> layers = {
+        layer("direct", {"R", "G", "B"}, renderer.readTerm(shader::TERM_DIRECT)),
+        layer("indirect", {"R", "G", "B"}, renderer.readTerm(shader::TERM_INDIRECT)),
+        layer("specular", {"R", "G", "B"}, renderer.readTerm(shader::TERM_SPECULAR)),
+        layer("ao", {"Y"}, renderer.readTerm(shader::TERM_AO)),
+        layer("albedo", {"R", "G", "B"}, surface.albedo),
+        layer("normal", {"X", "Y", "Z"}, surface.normal),
+        layer("depth", {"Z"}, surface.depth),
+    };
+    image::writeExrLayers(path, surface.depth.width, surface.depth.height, layers, type);
+}
+
 void writeJson(const std::string& path, const nlohmann::json& j) {
     std::filesystem::path p(path);
     if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
@@ -237,6 +263,8 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
 }
 
 int runRender(const RenderOptions& o) {
+    if (!o.aovExr.empty() && o.view != ViewKind::Final)
+        throw std::runtime_error("--aov: the terms exist only for the final image, not for --view voxels:...");
     const scene::Scene scene = loadForOptions(o);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
 
@@ -268,7 +296,10 @@ int runRender(const RenderOptions& o) {
         if (!eachFrame && frame + 1 < o.frames) continue;
         const image::ImageRGBA32F img = renderer.readOutput();
         lastExr = framePath(o.outExr, frame);
-        image::writeExr(lastExr, img);
+        image::ExrOptions exr;
+        exr.type = o.exrHalf ? image::PixelType::Half : image::PixelType::Float;
+        image::writeExr(lastExr, img, exr);
+        if (!o.aovExr.empty()) writeAov(framePath(o.aovExr, frame), renderer, exr.type);
         lastPng = pngPathFor(lastExr, o);
         if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
     }

@@ -89,7 +89,44 @@ std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
     return devices;
 }
 
+std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice pd) {
+    uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> families(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(pd, &n, families.data());
+    return families;
+}
+
+// Every pass runs on one queue, and the timers need timestamps on it.
+bool usableFamily(const VkQueueFamilyProperties& f) {
+    const VkQueueFlags want = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    return (f.queueFlags & want) == want && f.timestampValidBits > 0;
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messengerCreateInfo(PFN_vkDebugUtilsMessengerCallbackEXT callback, void* user) {
+    VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
+    info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+    info.pfnUserCallback = callback;
+    info.pUserData = user;
+    return info;
+}
+
 }  // namespace
+
+std::vector<std::string> requiredFeatures() {
+    return {"Vulkan 1.3",
+            "geometryShader",
+            "fragmentStoresAndAtomics",
+            "vertexPipelineStoresAndAtomics",
+            "shaderDrawParameters (1.1)",
+            "hostQueryReset (1.2)",
+            "dynamicRendering (1.3)",
+            "synchronization2 (1.3)",
+            "maintenance4 (1.3)",
+            "VK_KHR_push_descriptor",
+            "VK_EXT_shader_atomic_float shaderImageFloat32Atomics + shaderImageFloat32AtomicAdd (for voxels)"};
+}
 
 std::vector<std::string> listDevices(VkInstance instance) {
     std::vector<std::string> out;
@@ -134,13 +171,7 @@ Context::Context(const ContextOptions& options) {
     app.pEngineName = "dvsgi";
     app.apiVersion = VK_API_VERSION_1_3;
 
-    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messengerInfo.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT;
-    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
-    messengerInfo.pfnUserCallback = &Context::debugCallback;
-    messengerInfo.pUserData = this;
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo = messengerCreateInfo(&Context::debugCallback, this);
 
     VkInstanceCreateInfo ici{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     ici.pApplicationInfo = &app;
@@ -154,11 +185,7 @@ Context::Context(const ContextOptions& options) {
         throw GpuError("no Vulkan 1.3 driver found (install mesa-vulkan-drivers for the software driver)", r);
     VK_CHECK(r);
 
-    if (options.validation) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-        VK_CHECK(create(instance, &messengerInfo, nullptr, &messenger_));
-    }
+    if (options.validation) createMessenger();
 
     // Pick the device: a named one if asked, else the best type that speaks 1.3.
     std::vector<VkPhysicalDevice> candidates = physicalDevices(instance);
@@ -184,21 +211,15 @@ Context::Context(const ContextOptions& options) {
                        VK_ERROR_INITIALIZATION_FAILED);
     }
     vkGetPhysicalDeviceProperties(physical, &properties);
-    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
     deviceName = properties.deviceName;
 
-    uint32_t familyCount = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
-    std::vector<VkQueueFamilyProperties> families(familyCount);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
+    const std::vector<VkQueueFamilyProperties> families = queueFamilies(physical);
     queueFamily = UINT32_MAX;
-    for (uint32_t i = 0; i < familyCount; ++i) {
-        const VkQueueFlags want = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
-        if ((families[i].queueFlags & want) == want && families[i].timestampValidBits > 0) {
+    for (uint32_t i = 0; i < families.size(); ++i)
+        if (usableFamily(families[i])) {
             queueFamily = i;
             break;
         }
-    }
     if (queueFamily == UINT32_MAX)
         throw GpuError(deviceName + ": no graphics+compute queue with timestamps", VK_ERROR_FEATURE_NOT_PRESENT);
 
@@ -260,6 +281,7 @@ Context::Context(const ContextOptions& options) {
     on.features.fragmentStoresAndAtomics = VK_TRUE;
     on.features.vertexPipelineStoresAndAtomics = VK_TRUE;
     on.features.samplerAnisotropy = f2.features.samplerAnisotropy;
+    features.samplerAnisotropy = f2.features.samplerAnisotropy;
     on.features.multiDrawIndirect = f2.features.multiDrawIndirect;
 
     const float priority = 1.0f;
@@ -275,9 +297,44 @@ Context::Context(const ContextOptions& options) {
     dci.ppEnabledExtensionNames = deviceExtensions.data();
     VK_CHECK(vkCreateDevice(physical, &dci, nullptr, &device));
     vkGetDeviceQueue(device, queueFamily, 0, &queue);
+    finishSetup(options);
+}
 
+Context::Context(const ExternalDevice& external, const ContextOptions& options) : ownsDevice_(false) {
+    if (!external.instance || !external.physical || !external.device || !external.queue)
+        throw GpuError("external device: instance, physical device, device and queue must all be set",
+                       VK_ERROR_INITIALIZATION_FAILED);
+    instance = external.instance;
+    physical = external.physical;
+    device = external.device;
+    queue = external.queue;
+    queueFamily = external.queueFamily;
+    vkGetPhysicalDeviceProperties(physical, &properties);
+    deviceName = properties.deviceName;
+    if (properties.apiVersion < VK_API_VERSION_1_3)
+        throw GpuError("external device: " + deviceName + " does not support Vulkan 1.3",
+                       VK_ERROR_INCOMPATIBLE_DRIVER);
+    const std::vector<VkQueueFamilyProperties> families = queueFamilies(physical);
+    if (queueFamily >= families.size() || !usableFamily(families[queueFamily]))
+        throw GpuError("external device: queue family " + std::to_string(queueFamily) +
+                           " is not a graphics+compute family with timestamps",
+                       VK_ERROR_FEATURE_NOT_PRESENT);
+    features.atomicFloat = external.shaderImageFloat32AtomicAdd;
+    features.conservativeRaster = external.conservativeRasterization;
+    features.samplerAnisotropy = external.samplerAnisotropy;
+    if (external.debugUtils) createMessenger();
+    finishSetup(options);
+}
+
+// Shared by both constructors once instance, device and queue are known.
+void Context::finishSetup(const ContextOptions& options) {
+    vkGetPhysicalDeviceMemoryProperties(physical, &memory);
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(device, "vkCmdPushDescriptorSetKHR"));
+    // Null when the extension was not enabled: every pass binds through it.
+    if (!cmdPushDescriptorSet)
+        throw GpuError(deviceName + ": VK_KHR_push_descriptor is not enabled on the device",
+                       VK_ERROR_EXTENSION_NOT_PRESENT);
 
     VkCommandPoolCreateInfo cpi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cpi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -286,21 +343,34 @@ Context::Context(const ContextOptions& options) {
 
     if (options.printDevice)
         std::printf("device: %s (%s)%s\n", deviceName.c_str(), typeName(properties.deviceType),
-                    options.validation ? ", validation on" : "");
+                    messenger_ ? ", validation on" : "");
+}
+
+void Context::createMessenger() {
+    const VkDebugUtilsMessengerCreateInfoEXT info = messengerCreateInfo(&Context::debugCallback, this);
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (!create)
+        throw GpuError("VK_EXT_debug_utils is not enabled on the instance", VK_ERROR_EXTENSION_NOT_PRESENT);
+    VK_CHECK(create(instance, &info, nullptr, &messenger_));
 }
 
 Context::~Context() {
     if (device) {
-        vkDeviceWaitIdle(device);
-        vkDestroyCommandPool(device, commandPool, nullptr);
-        vkDestroyDevice(device, nullptr);
+        // An application's device may be busy with its own work; wait for ours only.
+        if (ownsDevice_)
+            vkDeviceWaitIdle(device);
+        else
+            vkQueueWaitIdle(queue);
+        if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
+        if (ownsDevice_) vkDestroyDevice(device, nullptr);
     }
     if (messenger_) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
         destroy(instance, messenger_, nullptr);
     }
-    if (instance) vkDestroyInstance(instance, nullptr);
+    if (instance && ownsDevice_) vkDestroyInstance(instance, nullptr);
 }
 
 uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const {

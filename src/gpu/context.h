@@ -20,14 +20,39 @@ struct ContextOptions {
     bool printDevice = false;      // one line naming the device on stdout
 };
 
+// Vulkan objects that an embedding application created and keeps owning. The
+// Context uses them and destroys none of them. The device must have been
+// created with API version 1.3 and what dvsgi needs (see requiredFeatures()).
+struct ExternalDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;  // graphics + compute, with timestamps
+    VkQueue queue = VK_NULL_HANDLE;
+    // What the application enabled beyond the required set: a device's enabled
+    // features cannot be queried, so the caller states them.
+    bool shaderImageFloat32AtomicAdd = false;  // VK_EXT_shader_atomic_float (voxels need it)
+    bool conservativeRasterization = false;    // VK_EXT_conservative_rasterization
+    bool samplerAnisotropy = false;            // textures are sampled anisotropically only then
+    // The instance has VK_EXT_debug_utils enabled: the Context then installs its
+    // own messenger and counts validation messages as it does for its own instance.
+    bool debugUtils = false;
+};
+
 struct DeviceFeatures {
     bool conservativeRaster = false;  // VK_EXT_conservative_rasterization
     bool atomicFloat = false;         // shaderImageFloat32AtomicAdd
+    bool samplerAnisotropy = false;   // enabled on the device; samplers use anisotropy only then
 };
 
 class Context {
 public:
     explicit Context(const ContextOptions& options);
+    // Wraps an application's device: only the command pool (and the messenger,
+    // with debugUtils) are created here and destroyed with the Context.
+    // options.printDevice applies; validation and deviceName do not (the
+    // application chose them). Throws GpuError naming what the device lacks.
+    Context(const ExternalDevice& external, const ContextOptions& options);
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -57,7 +82,14 @@ public:
 
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
 
+    bool ownsDevice() const { return ownsDevice_; }
+
 private:
+    void checkQueueFamily();
+    void finishSetup(const ContextOptions& options);
+    void createMessenger();
+
+    bool ownsDevice_ = true;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
     std::atomic<uint32_t> errors_{0};
     std::atomic<uint32_t> warnings_{0};
@@ -67,6 +99,10 @@ private:
                                                         VkDebugUtilsMessageTypeFlagsEXT,
                                                         const VkDebugUtilsMessengerCallbackDataEXT*, void*);
 };
+
+// Device-level features and extensions dvsgi enables on its own devices, and
+// that an ExternalDevice must have enabled: names for documentation and messages.
+std::vector<std::string> requiredFeatures();
 
 // Every physical device the loader reports, as "name (type)", for messages.
 std::vector<std::string> listDevices(VkInstance instance);

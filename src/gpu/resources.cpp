@@ -1,5 +1,7 @@
 #include "gpu/resources.h"
 
+#include <algorithm>
+
 #include "gpu/check.h"
 #include "gpu/context.h"
 
@@ -168,8 +170,9 @@ Sampler::Sampler(const Context& ctx, const SamplerDesc& d) : device_(ctx.device)
     sci.maxLod = VK_LOD_CLAMP_NONE;
     sci.compareEnable = d.compare;
     sci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    sci.anisotropyEnable = d.maxAnisotropy > 1.0f;
-    sci.maxAnisotropy = d.maxAnisotropy;
+    // Anisotropy is a quality hint: without the feature the sampler is plain trilinear.
+    sci.anisotropyEnable = d.maxAnisotropy > 1.0f && ctx.features.samplerAnisotropy;
+    sci.maxAnisotropy = sci.anisotropyEnable ? std::min(d.maxAnisotropy, ctx.properties.limits.maxSamplerAnisotropy) : 1.0f;
     VK_CHECK(vkCreateSampler(device_, &sci, nullptr, &sampler_));
 }
 

@@ -148,6 +148,22 @@ private:
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
     std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(N) floats
     std::unique_ptr<gpu::GpuTimers> timers_;
+
+public:
+    // Arbitrary output variables of the last frame (call after renderFrame(),
+    // final view only). readTerm re-runs only the composite with another
+    // shader::TERM_* and reads it back at output size, then composites the
+    // frame's own term again so outputImage() and readOutput() are unchanged.
+    image::ImageRGBA32F readTerm(uint32_t term) const;
+    // The G-buffer at output size, box-averaging the k x k internal samples:
+    // albedo (base colour, a = metallic), world normal (a = roughness,
+    // averaged then renormalized), depth (r = distance along the camera axis
+    // in metres, averaged over the samples that hit geometry; +inf where none
+    // did). Alpha of depth = fraction of samples that hit geometry.
+    struct SurfaceImages {
+        image::ImageRGBA32F albedo, normal, depth;
+    };
+    SurfaceImages readSurface() const;
 };
 
 // Camera matrices for an image of the given size (Vulkan clip space, Y flipped
