@@ -25,7 +25,7 @@ table="$out/gi-${size}px-${voxels}.md"
 } > "$table"
 cases=(
   "defaults|"
-  "paper: 1 bounce|--bounces 1"
+  "paper: 1 bounce, emitters by cones|--bounces 1 --emitters cones"
   "defaults, 16 cones|--cones 16"
 )
 for scene in cornell-lights cornell-emissive; do
