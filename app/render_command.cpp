@@ -109,6 +109,13 @@ void printVoxelGrid(const vxgi::VoxelVolumes& v, bool hardware) {
         std::printf("  %-36s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
 }
 
+glm::dvec3 meanRgb(const image::ImageRGBA32F& img) {
+    glm::dvec3 sum(0.0);
+    for (size_t i = 0; i + 3 < img.rgba.size(); i += 4) sum += glm::dvec3(img.rgba[i], img.rgba[i + 1], img.rgba[i + 2]);
+    const double n = std::max<double>(1.0, double(img.rgba.size() / 4));
+    return sum / n;
+}
+
 nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, const render::Renderer& renderer,
                            const render::FrameStats& stats, const render::FrameStats& first,
                            const scene::Scene& scene) {
@@ -280,6 +287,7 @@ int runRender(const RenderOptions& o) {
 
     const bool eachFrame = o.outExr.find('#') != std::string::npos;
     render::FrameStats stats, first;
+    glm::dvec3 outputMean(0.0);
     std::string lastExr, lastPng;
     for (uint32_t frame = 0; frame < o.frames; ++frame) {
         if (o.frames > 1 || !scene.animations.empty()) renderer.setTime(float(frame) * o.timeStep);
@@ -295,6 +303,7 @@ int runRender(const RenderOptions& o) {
         }
         if (!eachFrame && frame + 1 < o.frames) continue;
         const image::ImageRGBA32F img = renderer.readOutput();
+        outputMean = meanRgb(img);
         lastExr = framePath(o.outExr, frame);
         image::ExrOptions exr;
         exr.type = o.exrHalf ? image::PixelType::Half : image::PixelType::Float;
@@ -303,7 +312,14 @@ int runRender(const RenderOptions& o) {
         lastPng = pngPathFor(lastExr, o);
         if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
     }
-    if (!o.metricsPath.empty()) writeJson(o.metricsPath, metricsJson(o, ctx, renderer, stats, first, scene));
+    if (!o.metricsPath.empty()) {
+        nlohmann::json j = metricsJson(o, ctx, renderer, stats, first, scene);
+        // Mean radiance of the last image written, so scripts can compare runs
+        // (for example across voxel resolutions) without reading the EXR.
+        j["output_mean_rgb"] = {outputMean.r, outputMean.g, outputMean.b};
+        j["output_mean_luminance"] = 0.2126 * outputMean.r + 0.7152 * outputMean.g + 0.0722 * outputMean.b;
+        writeJson(o.metricsPath, j);
+    }
     if (!o.quiet) {
         printTable(stats, renderer.memory());
         std::printf("wrote %s%s%s\n", lastExr.c_str(), lastPng.empty() ? "" : " and ", lastPng.c_str());
