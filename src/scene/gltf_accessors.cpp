@@ -112,6 +112,8 @@ float component(const View& v, const uint8_t* p) {
 
 }  // namespace
 
+size_t accessorCount(const Context& c) { return arrayOrEmpty(c, c.doc, "accessors", "document").size(); }
+
 std::pair<const uint8_t*, size_t> bufferViewBytes(const Context& c, int index) {
     const json& views = arrayOrEmpty(c, c.doc, "bufferViews", "document");
     if (index < 0 || static_cast<size_t>(index) >= views.size())

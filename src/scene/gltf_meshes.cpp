@@ -44,7 +44,7 @@ Primitive loadPrimitive(Context& c, const json& pj, const std::string& where, si
     if (!has(attrs, "POSITION")) c.fail(where + ": missing POSITION attribute");
 
     auto attribute = [&](const char* name, std::initializer_list<const char*> types) {
-        int idx = reqIndex(c, attrs, name, SIZE_MAX, where, "accessor");
+        int idx = reqIndex(c, attrs, name, accessorCount(c), where, "accessor");
         return readFloatAccessor(c, idx, types, where + " " + name);
     };
 
@@ -76,7 +76,7 @@ Primitive loadPrimitive(Context& c, const json& pj, const std::string& where, si
     }
 
     if (has(pj, "indices")) {
-        int idx = reqIndex(c, pj, "indices", SIZE_MAX, where, "accessor");
+        int idx = reqIndex(c, pj, "indices", accessorCount(c), where, "accessor");
         p.indices = readIndexAccessor(c, idx, where + " indices");
     } else {
         p.indices.resize(pos.size());

@@ -1,6 +1,7 @@
 // glTF cameras, KHR_lights_punctual lights, the node hierarchy, the default
 // scene and animations.
 #include <cmath>
+#include <cstdint>
 
 #include "scene/gltf_internal.h"
 #include "scene/import_util.h"
@@ -108,13 +109,24 @@ void loadNodes(Context& c) {
             child.parent = static_cast<int>(i);
         }
     }
-    // With one parent per node, a cycle is a chain of parents that never ends.
+    // With one parent per node, a cycle is a chain of parents that never
+    // ends. Each chain is walked only until it meets a node already known to
+    // reach a root, so the whole check is linear in the node count (a long
+    // parent chain walked from every node would be quadratic).
+    enum : uint8_t { Unknown, OnPath, ReachesRoot };
+    std::vector<uint8_t> state(nodes.size(), Unknown);
+    std::vector<size_t> path;
     for (size_t i = 0; i < nodes.size(); ++i) {
-        int p = c.scene.nodes[i].parent;
-        for (size_t steps = 0; p >= 0; ++steps) {
-            if (steps > nodes.size()) c.fail("node " + std::to_string(i) + " is part of a cycle in the hierarchy");
+        path.clear();
+        int p = static_cast<int>(i);
+        while (p >= 0 && state[static_cast<size_t>(p)] == Unknown) {
+            state[static_cast<size_t>(p)] = OnPath;
+            path.push_back(static_cast<size_t>(p));
             p = c.scene.nodes[static_cast<size_t>(p)].parent;
         }
+        if (p >= 0 && state[static_cast<size_t>(p)] == OnPath)
+            c.fail("node " + std::to_string(p) + " is part of a cycle in the hierarchy");
+        for (size_t n : path) state[n] = ReachesRoot;
     }
 }
 
@@ -168,8 +180,8 @@ void loadAnimations(Context& c) {
             else if (interp == "STEP") ch.interpolation = Interpolation::Step;
             else if (interp == "CUBICSPLINE") ch.interpolation = Interpolation::CubicSpline;
             else c.fail(sw + ": unknown interpolation '" + interp + "'");
-            int in = reqIndex(c, sj, "input", SIZE_MAX, sw, "accessor");
-            int out = reqIndex(c, sj, "output", SIZE_MAX, sw, "accessor");
+            int in = reqIndex(c, sj, "input", accessorCount(c), sw, "accessor");
+            int out = reqIndex(c, sj, "output", accessorCount(c), sw, "accessor");
             for (const glm::vec4& t : readFloatAccessor(c, in, {"SCALAR"}, sw + " input")) ch.times.push_back(t.x);
             for (size_t i = 1; i < ch.times.size(); ++i)
                 if (ch.times[i] < ch.times[i - 1]) c.fail(sw + ": input times are not ascending");

@@ -1,0 +1,25 @@
+// Structural checks of OBJ, MTL and PLY bytes before assimp sees them. Assimp
+// asserts (aborting the process), loops forever or reads garbage on some
+// malformed inputs (a PLY without end_header, faces with zero indices, counts
+// larger than the data); these checks turn every such input into a LoadError
+// naming the file. They accept everything the shared scenes contain.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dvsgi::scene::detail {
+
+// Polygons with more corners than this are refused: assimp's triangulation
+// of one polygon is quadratic in its corner count.
+constexpr uint64_t kMaxPolygonCorners = 1024;
+
+// Each throws LoadError("<path>: ...") on the first problem found.
+void precheckPly(const std::string& path, const uint8_t* data, size_t size);
+// Returns the mtllib names the OBJ refers to (as written, '\\' turned '/').
+std::vector<std::string> precheckObj(const std::string& path, const uint8_t* data, size_t size);
+void precheckMtl(const std::string& path, const uint8_t* data, size_t size);
+
+}  // namespace dvsgi::scene::detail

@@ -1,0 +1,177 @@
+// glTF buffer and image URIs stay inside the scene's folder unless the caller
+// allows more; textures are bounded in size and shrink to a device limit.
+#include <gtest/gtest.h>
+
+#include "scene/load.h"
+#include "test_support.h"
+
+using namespace dvsgi::scene;
+using namespace scene_test;
+
+namespace {
+
+GltfBuilder triangleScene() {
+    GltfBuilder b;
+    b.addTriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2});
+    b.addNode({{"mesh", 0}});
+    b.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    return b;
+}
+
+std::string loadError(const std::string& path, const LoadOptions& o = {}) {
+    try {
+        loadScene(path, o);
+    } catch (const LoadError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no LoadError for " << path;
+    return {};
+}
+
+void expectError(const std::string& path, const std::string& fragment) {
+    std::string msg = loadError(path);
+    EXPECT_EQ(msg.rfind(path, 0), 0u) << "message does not start with the path: " << msg;
+    EXPECT_NE(msg.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
+}
+
+// A scene in dir/scene whose buffer 0 has URI `uri`; the buffer's bytes are
+// written to dir/<binFile> (relative to dir, not to the scene).
+std::string sceneWithBufferUri(const TempDir& dir, const std::string& uri, const std::string& binFile) {
+    fs::create_directories(dir.path() / "scene");
+    GltfBuilder b = triangleScene();
+    b.writeGltfExternal(dir, "tmp.gltf", binFile);
+    b.doc["buffers"][0]["uri"] = uri;
+    std::string path = dir.file("scene/a.gltf");
+    writeText(path, b.doc.dump());
+    return path;
+}
+
+}  // namespace
+
+TEST(GltfReferences, AbsoluteBufferUriRejected) {
+    TempDir dir;
+    std::string path = sceneWithBufferUri(dir, dir.file("outside.bin"), "outside.bin");
+    expectError(path, "buffer 0: URI '" + dir.file("outside.bin") + "' is an absolute path");
+}
+
+TEST(GltfReferences, DotDotEscapeRejectedUnlessAllowed) {
+    TempDir dir;
+    std::string path = sceneWithBufferUri(dir, "../outside.bin", "outside.bin");
+    expectError(path, "points outside the scene's folder");
+    LoadOptions o;
+    o.allowOutsideReferences = true;
+    EXPECT_EQ(loadScene(path, o).primitives.size(), 1u);
+}
+
+TEST(GltfReferences, DotDotThatStaysInsideAccepted) {
+    TempDir dir;
+    fs::create_directories(dir.path() / "scene/sub");
+    std::string path = sceneWithBufferUri(dir, "sub/../in.bin", "scene/in.bin");
+    EXPECT_EQ(loadScene(path).primitives.size(), 1u);
+}
+
+TEST(GltfReferences, SymlinkPointingOutsideRejected) {
+    TempDir dir;
+    std::string path = sceneWithBufferUri(dir, "link.bin", "outside.bin");
+    fs::create_symlink(dir.path() / "outside.bin", dir.path() / "scene/link.bin");
+    expectError(path, "points outside the scene's folder");
+}
+
+TEST(GltfReferences, PercentTricksRejected) {
+    TempDir dir;
+    expectError(sceneWithBufferUri(dir, "in.bin%00.png", "scene/in.bin"), "contains a NUL byte");
+    expectError(sceneWithBufferUri(dir, "in%2", "scene/in.bin"), "malformed percent escape");
+    expectError(sceneWithBufferUri(dir, "in%zz.bin", "scene/in.bin"), "malformed percent escape");
+    expectError(sceneWithBufferUri(dir, "%2e%2e/outside.bin", "outside.bin"), "points outside");
+    expectError(sceneWithBufferUri(dir, "file:///etc/passwd", "scene/in.bin"), "unsupported scheme");
+    // A NUL even the option does not allow: it would cut the name.
+    LoadOptions o;
+    o.allowOutsideReferences = true;
+    std::string msg = loadError(sceneWithBufferUri(dir, "in.bin%00x", "scene/in.bin"), o);
+    EXPECT_NE(msg.find("NUL"), std::string::npos) << msg;
+    // Encoded characters that are fine in file names still work.
+    EXPECT_EQ(loadScene(sceneWithBufferUri(dir, "in%20b.bin", "scene/in b.bin")).primitives.size(), 1u);
+}
+
+TEST(GltfReferences, ImageOutsideTheFolderIsAnError) {
+    TempDir dir;
+    fs::create_directories(dir.path() / "scene");
+    writePng(dir.file("secret.png"), 1, 1, {9, 9, 9, 255});
+    GltfBuilder b = triangleScene();
+    b.doc["images"] = json::array({{{"uri", "../secret.png"}}});
+    b.doc["textures"] = json::array({{{"source", 0}}});
+    b.doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    std::string path = b.writeGltfDataUri(dir, "scene/a.gltf");
+    expectError(path, "image 0: URI '../secret.png' points outside");
+}
+
+TEST(Textures, AbsurdDecodedSizeRefusedBeforeAllocating) {
+    TempDir dir;
+    // A 1x1 PNG whose header is edited to claim a 20000 x 20000 grey image:
+    // stb's own check counts one byte per grey texel and lets it through,
+    // then expands to RGBA, which would allocate 1.6 GB.
+    auto png = pngBytes(1, 1, {1, 2, 3, 255});
+    const uint8_t big[8] = {0, 0, 0x4E, 0x20, 0, 0, 0x4E, 0x20};
+    std::copy(big, big + 8, png.begin() + 16);
+    png[25] = 0;  // colour type: greyscale
+    GltfBuilder b = triangleScene();
+    b.doc["images"] = json::array({{{"uri", "data:image/png;base64," + base64(png)}}});
+    b.doc["textures"] = json::array({{{"source", 0}}});
+    b.doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    Scene s = loadScene(b.writeGltfDataUri(dir, "a.gltf"));
+    EXPECT_TRUE(s.textures.empty());
+    bool named = false;
+    for (const std::string& w : s.warnings)
+        named = named || w.find("image size 20000x20000 exceeds the limit") != std::string::npos;
+    EXPECT_TRUE(named) << (s.warnings.empty() ? std::string("no warnings") : s.warnings[0]);
+}
+
+TEST(Textures, LimitTextureSizeBoxFiltersKeepingAspect) {
+    Scene s;
+    Texture wide;
+    wide.name = "strip";
+    wide.width = 70000;
+    wide.height = 1;
+    wide.srgb = false;
+    wide.rgba8.resize(size_t(70000) * 4);
+    for (size_t i = 0; i < 70000; ++i) wide.rgba8[i * 4] = i % 2 ? 255 : 0;  // alternating texels
+    s.textures.push_back(wide);
+    Texture small;
+    small.width = small.height = 2;
+    small.rgba8.assign(16, 7);
+    s.textures.push_back(small);
+    std::vector<std::string> warnings;
+    limitTextureSize(s, 4096, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("'strip' is 70000x1"), std::string::npos) << warnings[0];
+    EXPECT_EQ(s.textures[0].width, 4096u);
+    EXPECT_EQ(s.textures[0].height, 1u);
+    ASSERT_EQ(s.textures[0].rgba8.size(), 4096u * 4);
+    // Linear data: the box mean of alternating 0/255 is about half.
+    for (uint32_t x = 0; x < 4096; x += 511) EXPECT_NEAR(s.textures[0].rgba8[x * 4], 128, 8) << x;
+    EXPECT_EQ(s.textures[1].width, 2u);  // within the limit: untouched
+    EXPECT_EQ(s.textures[1].rgba8, std::vector<uint8_t>(16, 7));
+}
+
+TEST(Textures, LimitTextureSizeAveragesSrgbInLinearLight) {
+    Scene s;
+    Texture t;
+    t.width = 4;
+    t.height = 2;
+    t.srgb = true;
+    // Each 2x2 block: two black and two white texels, alpha 255.
+    for (int i = 0; i < 8; ++i) {
+        uint8_t v = (i % 2) ? 255 : 0;
+        t.rgba8.insert(t.rgba8.end(), {v, v, v, 255});
+    }
+    s.textures.push_back(t);
+    limitTextureSize(s, 2, nullptr);
+    ASSERT_EQ(s.textures[0].width, 2u);
+    ASSERT_EQ(s.textures[0].height, 1u);
+    // Half the light is sRGB 188, not the encoded mean 128.
+    EXPECT_NEAR(s.textures[0].rgba8[0], 188, 1);
+    EXPECT_EQ(s.textures[0].rgba8[3], 255);
+}
