@@ -9,6 +9,8 @@
 
 #include <stb/stb_image.h>
 
+#include "scene/precheck.h"
+
 namespace dvsgi::scene::detail {
 
 std::optional<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& file) {
@@ -34,6 +36,7 @@ bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& er
     // stb keeps its flip flag in a global; make sure another user of the
     // library cannot leave it set and turn our images upside down.
     stbi_set_flip_vertically_on_load(0);
+    if (!precheckJpeg(data, size, error)) return false;
     int w = 0, h = 0, channels = 0;
     // The header alone gives the size: a small file can claim a huge image,
     // and the decoder would allocate it before noticing the data is short.

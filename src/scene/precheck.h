@@ -22,4 +22,9 @@ void precheckPly(const std::string& path, const uint8_t* data, size_t size);
 std::vector<std::string> precheckObj(const std::string& path, const uint8_t* data, size_t size);
 void precheckMtl(const std::string& path, const uint8_t* data, size_t size);
 
+// JPEG data that the system's stb_image (v2.27) would read out of bounds
+// with: a Huffman table declaring more than 256 codes overruns its size
+// array. Returns false with a reason; other damage is left to the decoder.
+bool precheckJpeg(const uint8_t* data, size_t size, std::string& error);
+
 }  // namespace dvsgi::scene::detail

@@ -539,6 +539,25 @@ def cli_cases(c):
     c.case("cli", "unknown_command", {}, argv=["paint"], expect="error", names=["paint"])
 
 
+def regressions(c):
+    """Inputs that crashed a fuzz target, kept once fixed (tests/corpus/regressions)."""
+    folder = os.path.join(os.path.dirname(os.path.abspath(__file__)), "regressions")
+    if not os.path.isdir(folder):
+        sys.exit("generate.py: regressions folder missing: " + folder)
+    for name in sorted(os.listdir(folder)):
+        with open(os.path.join(folder, name), "rb") as f:
+            data = f.read()
+        stem, ext = os.path.splitext(name)
+        if ext in (".png", ".jpg"):
+            t = Gltf(textured=True)
+            t.texture(uri="tex" + ext)
+            c.case("regressions", stem, {"scene.gltf": json.dumps(t.data_uri_doc()), "tex" + ext: data})
+        elif ext in (".gltf", ".glb", ".obj", ".ply"):
+            c.case("regressions", stem, {"scene" + ext: data}, scene="scene" + ext)
+        else:
+            sys.exit("generate.py: unknown regression input type: " + name)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: generate.py OUTDIR")
@@ -547,7 +566,7 @@ def main():
         shutil.rmtree(out)
     c = Corpus(out)
     for section in (gltf_structure, gltf_values, gltf_geometry, glb_cases, references, textures, obj_cases,
-                    ply_cases, cli_cases):
+                    ply_cases, cli_cases, regressions):
         section(c)
     summary = {"total": c.count, "categories": c.categories}
     with open(os.path.join(c.out, "summary.json"), "w") as f:

@@ -129,6 +129,25 @@ TEST(Textures, AbsurdDecodedSizeRefusedBeforeAllocating) {
     EXPECT_TRUE(named) << (s.warnings.empty() ? std::string("no warnings") : s.warnings[0]);
 }
 
+// Found by fuzz_image: stb_image 2.27 writes past its Huffman size table when
+// a DHT segment declares more than 256 codes. The image must be refused
+// before stb sees it.
+TEST(Textures, JpegHuffmanTableOverflowRefused) {
+    TempDir dir;
+    std::vector<uint8_t> jpg = {0xFF, 0xD8, 0xFF, 0xC4, 0x00, 0x13, 0x00};
+    for (int i = 0; i < 16; ++i) jpg.push_back(0xFF);  // 16 x 255 codes
+    jpg.insert(jpg.end(), {0xFF, 0xD9});
+    GltfBuilder b = triangleScene();
+    b.doc["images"] = json::array({{{"uri", "data:image/jpeg;base64," + base64(jpg)}}});
+    b.doc["textures"] = json::array({{{"source", 0}}});
+    b.doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    Scene s = loadScene(b.writeGltfDataUri(dir, "a.gltf"));
+    EXPECT_TRUE(s.textures.empty());
+    ASSERT_FALSE(s.warnings.empty());
+    EXPECT_NE(s.warnings[0].find("Huffman table with 4080 codes"), std::string::npos) << s.warnings[0];
+}
+
 TEST(Textures, LimitTextureSizeBoxFiltersKeepingAspect) {
     Scene s;
     Texture wide;
