@@ -35,8 +35,8 @@ if [[ ! -f $build/build.ninja ]]; then
 fi
 nice -n 10 cmake --build "$build" -j1 --target "$target"
 
-# Seeds: every matching file of a freshly generated corpus (images embedded
-# as data URIs are extracted too), plus the small files of the shared scenes.
+# Seeds: every matching file of a freshly generated corpus (for images, the
+# external texture files), plus the small files of the shared scenes.
 seeds=$build/seeds/$target
 rm -rf "$seeds" "$build/seeds/cases"
 mkdir -p "$seeds" "$build/corpus/$target" "$build/artifacts/$target" "$build/logs"

@@ -69,8 +69,10 @@ size_t accessorCount(const Context& c);
 
 // Reads accessor `index` as float tuples (normalized integers mapped to
 // [0,1] / [-1,1]). `types` lists the accepted accessor types, e.g. {"VEC3"}.
+// Non-finite values are an error unless `allowNonFinite` (normals, which
+// validateScene repairs).
 std::vector<glm::vec4> readFloatAccessor(const Context& c, int index, std::initializer_list<const char*> types,
-                                         const std::string& use);
+                                         const std::string& use, bool allowNonFinite = false);
 std::vector<uint32_t> readIndexAccessor(const Context& c, int index, const std::string& use);
 // Bytes of buffer view `index` (validated against its buffer).
 std::pair<const uint8_t*, size_t> bufferViewBytes(const Context& c, int index);

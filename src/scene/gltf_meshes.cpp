@@ -45,7 +45,9 @@ Primitive loadPrimitive(Context& c, const json& pj, const std::string& where, si
 
     auto attribute = [&](const char* name, std::initializer_list<const char*> types) {
         int idx = reqIndex(c, attrs, name, accessorCount(c), where, "accessor");
-        return readFloatAccessor(c, idx, types, where + " " + name);
+        // A NaN normal shades nothing; validateScene swaps in the face normal.
+        const bool normal = std::string(name) == "NORMAL";
+        return readFloatAccessor(c, idx, types, where + " " + name, normal);
     };
 
     Primitive p;

@@ -85,9 +85,13 @@ void loadNodes(Context& c) {
             auto r = optFloats(c, nj, "rotation", 4, {0, 0, 0, 1}, where);
             auto s = optFloats(c, nj, "scale", 3, {1, 1, 1}, where);
             n.translation = glm::vec3(t[0], t[1], t[2]);
-            glm::quat q(r[3], r[0], r[1], r[2]);
-            float len = glm::length(q);
-            n.rotation = len > 0.0f ? q / len : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+            // In double: the squared length of a quaternion near FLT_MAX
+            // overflows float and would turn the rotation into zeros.
+            double len = std::sqrt(double(r[0]) * r[0] + double(r[1]) * r[1] + double(r[2]) * r[2] +
+                                   double(r[3]) * r[3]);
+            n.rotation = len > 0.0 && std::isfinite(len)
+                             ? glm::quat(float(r[3] / len), float(r[0] / len), float(r[1] / len), float(r[2] / len))
+                             : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
             n.scale = glm::vec3(s[0], s[1], s[2]);
         }
         n.mesh = optIndex(c, nj, "mesh", c.scene.meshes.size(), where, "mesh");

@@ -150,7 +150,8 @@ TEST(SceneValues, GltfZeroNormalReplacedByTheFaceNormal) {
     GltfBuilder b;
     // Counter-clockwise seen from +Z: the face normal is +Z.
     int pos = b.addVec3({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
-    int nrm = b.addVec3({{0, 0, 0}, {0, 0, 0}, {0, 2, 0}});
+    const float nan = std::nanf("");
+    int nrm = b.addVec3({{0, 0, 0}, {nan, nan, nan}, {0, 2, 0}});
     b.addMesh(pos, nrm, -1);
     b.addNode({{"mesh", 0}});
     Scene s = loadScene(b.writeGltfExternal(dir, "a.gltf", "a.bin"));
@@ -161,6 +162,15 @@ TEST(SceneValues, GltfZeroNormalReplacedByTheFaceNormal) {
     bool warned = false;
     for (const std::string& w : s.warnings) warned = warned || w.find("2 vertex normal(s)") != std::string::npos;
     EXPECT_TRUE(warned);
+}
+
+TEST(SceneValues, QuaternionNearFloatMaxIsNormalizedNotZeroed) {
+    TempDir dir;
+    GltfBuilder b = triangleScene();
+    b.doc["nodes"][0]["rotation"] = {0, 3e38, 0, 3e38};  // 90 degrees about Y
+    Scene s = loadScene(b.writeGltfExternal(dir, "a.gltf", "a.bin"));
+    EXPECT_NEAR(s.nodes[0].rotation.w, std::sqrt(0.5f), 1e-6);
+    EXPECT_NEAR(s.nodes[0].rotation.y, std::sqrt(0.5f), 1e-6);
 }
 
 // The cycle check walked every node's whole parent chain: quadratic, minutes
