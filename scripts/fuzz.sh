@@ -20,7 +20,7 @@ shift 2
 case "$target" in
     fuzz_gltf) patterns=("*.gltf" "*.glb") ;;
     fuzz_objply) patterns=("*.obj" "*.ply") ;;
-    fuzz_image) patterns=("*.png" "*.jpg" "*.jpeg") ;;
+    fuzz_image) patterns=("*.png" "*.jpg" "*.jpeg" "*.bmp" "*.tga") ;;
     *) echo "fuzz.sh: unknown target '$target' (fuzz_gltf, fuzz_objply or fuzz_image)" >&2; exit 2 ;;
 esac
 

@@ -7,7 +7,26 @@
 #include <fstream>
 #include <string>
 
+// stb_image is compiled here with static linkage: the binary also links
+// Debian's libstb (for imgui), whose global stbi_* symbols would otherwise
+// win the link and bypass this configuration. Only the formats glTF allows
+// (PNG, JPEG) and the two common in OBJ material libraries (BMP, TGA) are
+// decoded; the rest of stb's decoders stay out of reach of hostile files.
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_FAILURE_USERMSG
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_BMP
+#define STBI_ONLY_TGA
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#endif
 #include <stb/stb_image.h>
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 #include "scene/precheck.h"
 

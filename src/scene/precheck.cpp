@@ -433,8 +433,11 @@ void precheckMtl(const std::string& path, const uint8_t* data, size_t size) {
 }
 
 bool precheckJpeg(const uint8_t* data, size_t size, std::string& error) {
-    if (size < 2 || data[0] != 0xFF || data[1] != 0xD8) return true;  // not a JPEG
-    size_t pos = 2;
+    // stb skips 0xFF fill bytes before every marker, the first one included.
+    size_t pos = 0;
+    while (pos < size && data[pos] == 0xFF) ++pos;
+    if (pos == 0 || pos >= size || data[pos] != 0xD8) return true;  // not a JPEG
+    ++pos;
     while (pos + 1 < size) {
         if (data[pos] != 0xFF) {
             // Entropy-coded data after a scan: look for the next marker (an

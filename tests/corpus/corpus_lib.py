@@ -59,6 +59,22 @@ def png(width, height, rgba=None, color_type=6, bit_depth=8, raw=None):
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
 
 
+def bmp(width, height, bgr=(40, 120, 200)):
+    """An uncompressed 24-bit BMP (rows bottom-up, padded to 4 bytes)."""
+    row = bytes(bgr) * width
+    row += b"\0" * (-len(row) % 4)
+    pixels = row * height
+    header = b"BM" + struct.pack("<IHHI", 54 + len(pixels), 0, 0, 54)
+    dib = struct.pack("<IiiHHIIiiII", 40, width, height, 1, 24, 0, len(pixels), 2835, 2835, 0, 0)
+    return header + dib + pixels
+
+
+def tga(width, height, bgr=(40, 120, 200)):
+    """An uncompressed true-colour TGA."""
+    header = struct.pack("<BBBHHBHHHHBB", 0, 0, 2, 0, 0, 0, 0, 0, width, height, 24, 0)
+    return header + bytes(bgr) * (width * height)
+
+
 def jpeg(width, height, path_hint):
     """A baseline JPEG written by OpenImageIO (the runner needs it anyway)."""
     import OpenImageIO as oiio

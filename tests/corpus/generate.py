@@ -10,12 +10,13 @@ committed."""
 
 import copy
 import json
+import struct
 import os
 import shutil
 import sys
 
-from corpus_lib import (Corpus, Gltf, OBJ_FACES, OBJ_QUAD, PLY_FACES, PLY_VERTS, jpeg, png, ply_ascii,
-                        ply_binary)
+from corpus_lib import (Corpus, Gltf, OBJ_FACES, OBJ_QUAD, PLY_FACES, PLY_VERTS, bmp, jpeg, png, ply_ascii,
+                        ply_binary, tga)
 
 NAN = float("nan")
 
@@ -206,7 +207,6 @@ def gltf_values(c):
 
 def gltf_geometry(c):
     """Attribute data edited inside the binary buffer."""
-    import struct
 
     def with_bin(slug, edit, expect):
         g = Gltf()
@@ -358,6 +358,12 @@ def textures(c):
         bad[k] ^= 0x5A
     tex("jpeg_corrupted", bytes(bad), mime="image/jpeg")
     tex("jpeg_external", jpg, "ok", external="tex.jpg")
+    tex("bmp_external", bmp(4, 4), "ok", external="tex.bmp")
+    tex("bmp_truncated", bmp(4, 4)[:60], external="tex.bmp")
+    tex("bmp_claims_huge", bmp(4, 4)[:18] + struct.pack("<ii", 30000, 30000) + bmp(4, 4)[26:], external="tex.bmp")
+    tex("tga_external", tga(4, 4), "ok", external="tex.tga")
+    tex("tga_truncated", tga(4, 4)[:25], external="tex.tga")
+    tex("gif_unsupported", b"GIF89a" + b"\0" * 20, external="tex.gif")
 
 
 def obj_cases(c):
