@@ -356,7 +356,7 @@ void checkNumbers(const std::string& path, size_t lineNo, const std::vector<std:
         if (!parseDouble(tk[k], d)) fail(path, where + ": '" + std::string(tk[k]) + "' is not a number");
         // Beyond FLT_MAX the value becomes infinite once stored as float.
         if (finite && !(std::abs(d) <= FLT_MAX))
-            fail(path, where + ": value '" + std::string(tk[k]) + "' is not finite in single precision");
+            fail(path, where + ": value '" + std::string(tk[k]) + "' is not finite (or beyond single precision)");
     }
 }
 

@@ -6,6 +6,7 @@
 #include <cfloat>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <sstream>
 
 #include "scene/import_util.h"
@@ -26,8 +27,9 @@ constexpr float kMaxCoordinate = 1e18f;
 constexpr float kPi = 3.14159265358979f;
 
 std::string num(double v) {
+    // Enough digits that a float just above a limit does not print as the limit.
     std::ostringstream s;
-    s << v;
+    s << std::setprecision(9) << v;
     return s.str();
 }
 

@@ -123,7 +123,7 @@ TEST(SceneValues, DegenerateCamerasRejected) {
         {kGoodPerspective, {{"scale", {0, 0, 0}}}, "camera's transform is singular"},
         {kGoodPerspective, {{"scale", {1, 0, 1}}}, "camera's transform is singular"},
         {kGoodPerspective, {{"matrix", {1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 5, 1}}}, "singular"},
-        {{{"yfov", 3.1416}, {"znear", 0.1}, {"zfar", 100}}, json::object(), "yfov 3.1416 must be in (0, pi)"},
+        {{{"yfov", 3.1416}, {"znear", 0.1}, {"zfar", 100}}, json::object(), "yfov 3.14159989 must be in (0, pi)"},
         {{{"yfov", 4.0}, {"znear", 0.1}, {"zfar", 100}}, json::object(), "yfov"},
         {{{"yfov", 0.7}, {"znear", 1.0}, {"zfar", 1.0000001}}, json::object(), "zfar"},
         {{{"yfov", 0.7}, {"znear", 0.1}, {"zfar", 100}, {"aspectRatio", -1}}, json::object(), "aspectRatio"},
