@@ -56,6 +56,11 @@ bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& er
     // library cannot leave it set and turn our images upside down.
     stbi_set_flip_vertically_on_load(0);
     if (!precheckJpeg(data, size, error)) return false;
+    const std::vector<uint8_t> cleaned = withoutEmptyPngIdat(data, size);
+    if (!cleaned.empty()) {
+        data = cleaned.data();
+        size = cleaned.size();
+    }
     int w = 0, h = 0, channels = 0;
     // The header alone gives the size: a small file can claim a huge image,
     // and the decoder would allocate it before noticing the data is short.

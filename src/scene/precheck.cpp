@@ -476,4 +476,28 @@ bool precheckJpeg(const uint8_t* data, size_t size, std::string& error) {
     return true;
 }
 
+std::vector<uint8_t> withoutEmptyPngIdat(const uint8_t* data, size_t size) {
+    static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A};
+    if (size < 8 || std::memcmp(data, signature, 8) != 0) return {};
+    std::vector<size_t> empty;  // offsets of zero-length IDAT chunks (12 bytes each)
+    size_t pos = 8;
+    while (pos + 12 <= size) {
+        const size_t len = (size_t(data[pos]) << 24) | (size_t(data[pos + 1]) << 16) |
+                           (size_t(data[pos + 2]) << 8) | data[pos + 3];
+        if (len == 0 && std::memcmp(data + pos + 4, "IDAT", 4) == 0) empty.push_back(pos);
+        if (len > size - pos - 12) break;  // truncated: the decoder reports it
+        pos += 12 + len;
+    }
+    if (empty.empty()) return {};
+    std::vector<uint8_t> out;
+    out.reserve(size);
+    size_t from = 0;
+    for (size_t at : empty) {
+        out.insert(out.end(), data + from, data + at);
+        from = at + 12;
+    }
+    out.insert(out.end(), data + from, data + size);
+    return out;
+}
+
 }  // namespace dvsgi::scene::detail

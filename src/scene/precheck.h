@@ -27,4 +27,10 @@ void precheckMtl(const std::string& path, const uint8_t* data, size_t size);
 // array. Returns false with a reason; other damage is left to the decoder.
 bool precheckJpeg(const uint8_t* data, size_t size, std::string& error);
 
+// A PNG with its zero-length IDAT chunks removed, or an empty vector when it
+// has none. stb_image 2.27 copies a zero-length first IDAT through a null
+// pointer (undefined behaviour); such chunks carry no data, so dropping them
+// changes no texel.
+std::vector<uint8_t> withoutEmptyPngIdat(const uint8_t* data, size_t size);
+
 }  // namespace dvsgi::scene::detail

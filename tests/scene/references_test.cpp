@@ -150,6 +150,25 @@ TEST(Textures, JpegHuffmanTableOverflowRefused) {
     EXPECT_NE(s.warnings[0].find("Huffman table with 4080 codes"), std::string::npos) << s.warnings[0];
 }
 
+// Found by fuzz_image: a zero-length IDAT before the data made stb copy
+// through a null pointer. Such chunks hold nothing; the image decodes as if
+// they were absent.
+TEST(Textures, PngWithEmptyFirstIdatDecodes) {
+    TempDir dir;
+    const std::vector<uint8_t> texels = {10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 255, 1, 2, 3, 4};
+    auto png = pngBytes(2, 2, texels);
+    const std::vector<uint8_t> emptyIdat = {0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xAF, 0x06, 0x1E};
+    png.insert(png.begin() + 33, emptyIdat.begin(), emptyIdat.end());  // after the signature and IHDR
+    GltfBuilder b = triangleScene();
+    b.doc["images"] = json::array({{{"uri", "data:image/png;base64," + base64(png)}}});
+    b.doc["textures"] = json::array({{{"source", 0}}});
+    b.doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
+    b.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    Scene s = loadScene(b.writeGltfDataUri(dir, "a.gltf"));
+    ASSERT_EQ(s.textures.size(), 1u) << (s.warnings.empty() ? "" : s.warnings[0]);
+    EXPECT_EQ(s.textures[0].rgba8, texels);
+}
+
 TEST(Textures, LimitTextureSizeBoxFiltersKeepingAspect) {
     Scene s;
     Texture wide;
