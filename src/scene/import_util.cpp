@@ -64,11 +64,13 @@ bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& er
     int w = 0, h = 0, channels = 0;
     // The header alone gives the size: a small file can claim a huge image,
     // and the decoder would allocate it before noticing the data is short.
-    if (stbi_info_from_memory(data, static_cast<int>(size), &w, &h, &channels) &&
-        static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > kMaxImageTexels) {
-        error = "image size " + std::to_string(w) + "x" + std::to_string(h) + " exceeds the limit of " +
-                std::to_string(kMaxImageTexels) + " texels";
-        return false;
+    if (stbi_info_from_memory(data, static_cast<int>(size), &w, &h, &channels)) {
+        if (static_cast<uint64_t>(w) * static_cast<uint64_t>(h) > kMaxImageTexels) {
+            error = "image size " + std::to_string(w) + "x" + std::to_string(h) + " exceeds the limit of " +
+                    std::to_string(kMaxImageTexels) + " texels";
+            return false;
+        }
+        if (!precheckImageData(data, size, static_cast<uint64_t>(w), static_cast<uint64_t>(h), error)) return false;
     }
     stbi_uc* pixels = stbi_load_from_memory(data, static_cast<int>(size), &w, &h, &channels, 4);
     if (!pixels) {

@@ -347,6 +347,21 @@ void checkCorner(const std::string& path, size_t lineNo, std::string_view ref, c
     }
 }
 
+enum class ObjStatement { Other, V, VT, VN, Face, Unknown };
+
+// Classifies a statement the way assimp's OBJ parser does: by its first one
+// or two characters, not the whole keyword ("vtx" is a texture coordinate,
+// "f12" a face). Names that assimp would misread as geometry are Unknown.
+ObjStatement objStatement(std::string_view kw) {
+    if (kw == "v") return ObjStatement::V;
+    if (kw == "vt") return ObjStatement::VT;
+    if (kw == "vn") return ObjStatement::VN;
+    if (kw == "f" || kw == "l" || kw == "p") return ObjStatement::Face;
+    if (kw.front() == 'f' || kw.front() == 'l' || kw.front() == 'p') return ObjStatement::Unknown;
+    if (kw.size() >= 2 && kw[0] == 'v' && (kw[1] == 't' || kw[1] == 'n')) return ObjStatement::Unknown;
+    return ObjStatement::Other;
+}
+
 void checkNumbers(const std::string& path, size_t lineNo, const std::vector<std::string_view>& tk, size_t min,
                   size_t max, bool finite) {
     const std::string where = "line " + std::to_string(lineNo) + " ('" + std::string(tk[0]) + "')";
@@ -371,9 +386,12 @@ std::vector<std::string> precheckObj(const std::string& path, const uint8_t* dat
     forEachLine(data, size, [&](size_t, std::string_view line) {
         auto tk = tokens(line);
         if (tk.empty()) return;
-        if (tk[0] == "v") ++total.v;
-        else if (tk[0] == "vt") ++total.vt;
-        else if (tk[0] == "vn") ++total.vn;
+        switch (objStatement(tk[0])) {
+        case ObjStatement::V: ++total.v; break;
+        case ObjStatement::VT: ++total.vt; break;
+        case ObjStatement::VN: ++total.vn; break;
+        default: break;
+        }
     });
     ObjCounts sofar;
     std::vector<std::string> mtllibs;
@@ -381,18 +399,22 @@ std::vector<std::string> precheckObj(const std::string& path, const uint8_t* dat
         auto tk = tokens(line);
         if (tk.empty() || tk[0].front() == '#') return;
         const std::string_view kw = tk[0];
-        if (kw == "v") {
+        const ObjStatement kind = objStatement(kw);
+        if (kind == ObjStatement::Unknown)
+            fail(path, "line " + std::to_string(lineNo) + ": unknown statement '" + std::string(kw) +
+                           "' (assimp would read it as '" + kw.front() + "')");
+        if (kind == ObjStatement::V) {
             // Positions must be finite: they decide the bounds and the voxel grid.
             checkNumbers(path, lineNo, tk, 3, 3, true);
             ++sofar.v;
-        } else if (kw == "vt") {
+        } else if (kind == ObjStatement::VT) {
             checkNumbers(path, lineNo, tk, 1, 3, true);
             ++sofar.vt;
-        } else if (kw == "vn") {
+        } else if (kind == ObjStatement::VN) {
             // Non-finite normals are repaired later (replaced by the face normal).
             checkNumbers(path, lineNo, tk, 3, 3, false);
             ++sofar.vn;
-        } else if (kw == "f" || kw == "l" || kw == "p") {
+        } else if (kind == ObjStatement::Face) {
             const size_t min = kw == "f" ? 3 : kw == "l" ? 2 : 1;
             const size_t corners = tk.size() - 1;
             if (corners < min || corners > kMaxPolygonCorners)
@@ -472,6 +494,34 @@ bool precheckJpeg(const uint8_t* data, size_t size, std::string& error) {
         }
         if (pos + 2 + len > size) return true;
         pos += 2 + len;
+    }
+    return true;
+}
+
+bool precheckImageData(const uint8_t* data, size_t size, uint64_t width, uint64_t height, std::string& error) {
+    const uint64_t texels = width * height;
+    if (texels > uint64_t(size) * 16384) {
+        error = "image header claims " + std::to_string(width) + "x" + std::to_string(height) +
+                " texels, more than " + std::to_string(size) + " bytes of data can hold";
+        return false;
+    }
+    auto u16 = [&](size_t at) { return uint64_t(data[at]) | uint64_t(data[at + 1]) << 8; };
+    auto u32 = [&](size_t at) { return u16(at) | u16(at + 2) << 16; };
+    uint64_t need = 0;
+    if (size >= 34 && data[0] == 'B' && data[1] == 'M') {
+        const uint64_t offset = u32(10), header = u32(14);
+        const uint64_t bpp = header >= 40 ? u16(28) : u16(24);
+        const uint64_t compression = header >= 40 ? u32(30) : 0;
+        if (compression == 0 || compression == 3)  // BI_RGB, BI_BITFIELDS: every row stored
+            need = offset + (bpp * width + 31) / 32 * 4 * height;
+    } else if (size >= 18 && (data[2] == 1 || data[2] == 2 || data[2] == 3)) {
+        // Uncompressed TGA (types 9-11 are run-length encoded).
+        const uint64_t cmap = data[1] ? u16(5) * ((uint64_t(data[7]) + 7) / 8) : 0;
+        need = 18 + data[0] + cmap + width * height * ((uint64_t(data[16]) + 7) / 8);
+    }
+    if (need > size) {
+        error = "image data is truncated (" + std::to_string(size) + " of " + std::to_string(need) + " bytes)";
+        return false;
     }
     return true;
 }

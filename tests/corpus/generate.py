@@ -554,7 +554,7 @@ def regressions(c):
         with open(os.path.join(folder, name), "rb") as f:
             data = f.read()
         stem, ext = os.path.splitext(name)
-        if ext in (".png", ".jpg"):
+        if ext in (".png", ".jpg", ".tga", ".bmp"):
             t = Gltf(textured=True)
             t.texture(uri="tex" + ext)
             c.case("regressions", stem, {"scene.gltf": json.dumps(t.data_uri_doc()), "tex" + ext: data})

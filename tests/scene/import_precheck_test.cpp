@@ -158,6 +158,18 @@ TEST(ObjPrecheck, IndexOutOfRange) {
     expectError(dir.file("d.obj"), "normal index 2 out of range");
 }
 
+// Found by fuzz_objply: assimp reads any statement starting with 'f' as a
+// face, so "f12 48//12" reached its out-of-range error path, which leaks.
+TEST(ObjPrecheck, StatementsAssimpWouldMisreadAreRefused) {
+    TempDir dir;
+    writeText(dir.file("a.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf12 48//12\n");
+    expectError(dir.file("a.obj"), "line 5: unknown statement 'f12' (assimp would read it as 'f')");
+    writeText(dir.file("b.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nface 1 2 3\n");
+    expectError(dir.file("b.obj"), "unknown statement 'face'");
+    writeText(dir.file("c.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nvtx 0 0\nf 1 2 3\n");
+    expectError(dir.file("c.obj"), "unknown statement 'vtx' (assimp would read it as 'v')");
+}
+
 TEST(ObjPrecheck, RelativeIndicesAndQuadsStillLoad) {
     TempDir dir;
     writeText(dir.file("a.obj"), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf -4 -3 -2 -1\n");

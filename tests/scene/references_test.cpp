@@ -2,6 +2,7 @@
 // allows more; textures are bounded in size and shrink to a device limit.
 #include <gtest/gtest.h>
 
+#include "scene/import_util.h"
 #include "scene/load.h"
 #include "test_support.h"
 
@@ -167,6 +168,27 @@ TEST(Textures, PngWithEmptyFirstIdatDecodes) {
     Scene s = loadScene(b.writeGltfDataUri(dir, "a.gltf"));
     ASSERT_EQ(s.textures.size(), 1u) << (s.warnings.empty() ? "" : s.warnings[0]);
     EXPECT_EQ(s.textures[0].rgba8, texels);
+}
+
+// Found by fuzz_image: a 64-byte TGA header claiming 11055 x 20034 texels
+// made stb allocate 900 MB and decode zeros for ten seconds.
+TEST(Textures, HeadersClaimingMoreThanTheDataHoldsRefused) {
+    std::vector<uint8_t> tga(64, 8);
+    const uint8_t header[18] = {0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x2F, 0x2B, 0x42, 0x4E, 8, 8};
+    std::copy(header, header + 18, tga.begin());
+    Texture t;
+    std::string error;
+    EXPECT_FALSE(detail::decodeImage(tga.data(), tga.size(), t, error));
+    EXPECT_NE(error.find("claims 11055x20034 texels, more than 64 bytes"), std::string::npos) << error;
+    // An uncompressed 4x4 TGA with two of its four rows.
+    std::vector<uint8_t> small(18 + 4 * 2 * 3, 7);
+    const uint8_t smallHeader[18] = {0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 4, 0, 4, 0, 24, 0};
+    std::copy(smallHeader, smallHeader + 18, small.begin());
+    EXPECT_FALSE(detail::decodeImage(small.data(), small.size(), t, error));
+    EXPECT_NE(error.find("truncated (42 of 66 bytes)"), std::string::npos) << error;
+    small.resize(66, 7);
+    EXPECT_TRUE(detail::decodeImage(small.data(), small.size(), t, error)) << error;
+    EXPECT_EQ(t.width, 4u);
 }
 
 TEST(Textures, LimitTextureSizeBoxFiltersKeepingAspect) {
