@@ -19,14 +19,16 @@ class Corpus:
         self.categories = {}
         os.makedirs(self.out, exist_ok=True)
 
-    def case(self, category, slug, files, scene="scene.gltf", expect="any", args=None, voxels=0,
-             names=None, argv=None):
+    def case(self, category, slug, files, scene="scene.gltf", expect="any", args=None, voxels=32,
+             names=None, argv=None, timeout=None):
         """Writes one case. files: {relative name: bytes|str}. scene: file the
         render command gets (None: no scene argument; a string starting with
         '/' or '{' is passed as is after substitution). expect: 'ok', 'error'
-        or 'any'. names: strings one of which the error line must contain
+        or 'any'. voxels: --voxels (32 runs the voxel GI path, where NaNs
+        would spread through the grid). names: strings one of which the error line must contain
         (default: the case folder). argv: a full argument list replacing the
-        default render command ({out} and {case} are substituted)."""
+        default render command ({out} and {case} are substituted). timeout:
+        seconds, replacing the runner's per-case limit."""
         self.count += 1
         self.categories[category] = self.categories.get(category, 0) + 1
         folder = os.path.join(self.out, "%03d_%s" % (self.count, slug))
@@ -38,7 +40,7 @@ class Corpus:
             with open(path, mode) as f:
                 f.write(data)
         meta = {"category": category, "scene": scene, "expect": expect, "args": args or [],
-                "voxels": voxels, "names": names, "argv": argv}
+                "voxels": voxels, "names": names, "argv": argv, "timeout": timeout}
         with open(os.path.join(folder, "case.json"), "w") as f:
             json.dump(meta, f, indent=1)
         return folder

@@ -59,7 +59,7 @@ def command(binary, folder, meta, out_exr):
     argv = [binary, "render"]
     if meta.get("scene") is not None:
         argv.append(os.path.join(folder, meta["scene"]))
-    argv += ["--width", "32", "--height", "32", "--voxels", str(meta.get("voxels", 0)), "--quiet",
+    argv += ["--width", "32", "--height", "32", "--voxels", str(meta.get("voxels", 32)), "--quiet",
              "--out", out_exr, "--png", "none"]
     return argv + [sub(a) for a in meta.get("args", [])]
 
@@ -85,40 +85,47 @@ def image_problem(path):
     return None
 
 
+def judge(proc, meta, folder, out_dir, out_exr):
+    """The problem with one finished run, or None."""
+    stderr = proc.stderr.decode("utf-8", "replace")
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    expect = meta.get("expect", "any")
+    if proc.returncode < 0:
+        return "crash (signal %d)" % -proc.returncode
+    if proc.returncode > 128:
+        return "crash (exit %d)" % proc.returncode
+    if proc.returncode != 0:
+        left = os.listdir(out_dir)
+        names = meta.get("names") or [folder]
+        if expect == "ok":
+            return "expected a render, got exit %d: %s" % (proc.returncode, stderr.strip()[:300])
+        if len(lines) != 1:
+            return "error output is %d lines, not 1: %r" % (len(lines), stderr[:400])
+        if not any(n in lines[0] for n in names):
+            return "error line names none of %s: %s" % (names, lines[0][:300])
+        if left:
+            return "failed but left files behind: %s" % left
+        return None
+    if expect == "error":
+        return "expected an error, got exit 0 (stderr: %s)" % stderr.strip()[:200]
+    return image_problem(out_exr)
+
+
 def run_case(binary, work, timeout, case):
+    """(name, problem or None, seconds, exit status or None after a timeout)."""
     name, folder, meta = case
     out_dir = os.path.join(work, name)
     os.makedirs(out_dir)
     out_exr = os.path.join(out_dir, "x.exr")
     argv = command(binary, folder, meta, out_exr)
+    timeout = meta.get("timeout") or timeout
     start = time.monotonic()
     try:
         proc = subprocess.run(argv, stdin=subprocess.DEVNULL, capture_output=True, timeout=timeout)
     except subprocess.TimeoutExpired:
-        return name, "hang (no exit within %g s)" % timeout, timeout
+        return name, "hang (no exit within %g s)" % timeout, timeout, None
     seconds = time.monotonic() - start
-    stderr = proc.stderr.decode("utf-8", "replace")
-    lines = [line for line in stderr.splitlines() if line.strip()]
-    expect = meta.get("expect", "any")
-    if proc.returncode < 0:
-        return name, "crash (signal %d)" % -proc.returncode, seconds
-    if proc.returncode > 128:
-        return name, "crash (exit %d)" % proc.returncode, seconds
-    if proc.returncode != 0:
-        left = os.listdir(out_dir)
-        names = meta.get("names") or [folder]
-        if expect == "ok":
-            return name, "expected a render, got exit %d: %s" % (proc.returncode, stderr.strip()[:300]), seconds
-        if len(lines) != 1:
-            return name, "error output is %d lines, not 1: %r" % (len(lines), stderr[:400]), seconds
-        if not any(n in lines[0] for n in names):
-            return name, "error line names none of %s: %s" % (names, lines[0][:300]), seconds
-        if left:
-            return name, "failed but left files behind: %s" % left, seconds
-        return name, None, seconds
-    if expect == "error":
-        return name, "expected an error, got exit 0 (stderr: %s)" % stderr.strip()[:200], seconds
-    return name, image_problem(out_exr), seconds
+    return name, judge(proc, meta, folder, out_dir, out_exr), seconds, proc.returncode
 
 
 def main():
@@ -163,7 +170,7 @@ def main():
 
         failures, xfail, slowest = [], [], sorted(results, key=lambda r: -r[2])[:3]
         known = dict(EXPECTED_FAILURES)
-        for name, problem, _ in results:
+        for name, problem, _, _ in results:
             slug = slug_of(name)
             if slug in known:
                 if problem is None:
@@ -176,9 +183,11 @@ def main():
             print("XFAIL %s: %s [%s]" % (name, problem, reason))
         for name, problem in failures:
             print("FAIL  %s: %s" % (name, problem))
-        print("corpus: %d cases, %d passed, %d expected failures, %d failed in %.1f s (%d at a time); slowest: %s"
-              % (len(results), len(results) - len(failures) - len(xfail), len(xfail), len(failures), elapsed,
-                 args.jobs, ", ".join("%s %.1f s" % (n, s) for n, _, s in slowest)))
+        renders = sum(1 for _, _, _, rc in results if rc == 0)
+        print("corpus: %d cases (%d rendered), %d passed, %d expected failures, %d failed in %.1f s (%d at a time); "
+              "slowest: %s" % (len(results), renders, len(results) - len(failures) - len(xfail), len(xfail),
+                               len(failures), elapsed, args.jobs,
+                               ", ".join("%s %.1f s" % (n, s) for n, _, s, _ in slowest)))
         return 1 if failures else 0
     finally:
         if not args.work:
