@@ -6,6 +6,7 @@
 // OBJ/PLY carry no cameras or lights; loadScene adds the defaults.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include <assimp/Importer.hpp>
@@ -304,6 +305,24 @@ Scene loadWithAssimp(const std::string& path, const LoadOptions& options) {
 
 Scene loadWithAssimpFromMemory(const std::string& path, const std::string& ext, const uint8_t* data, size_t size) {
     precheck(path, ext, data, size, nullptr, false);
+    // assimp's in-memory IO system crashes (SIGSEGV, found by fuzz_objply)
+    // when the OBJ parser asks it for an mtllib; there is no folder to find
+    // one in anyway, so such lines become comments.
+    std::vector<uint8_t> copy;
+    if (ext == ".obj") {
+        copy.assign(data, data + size);
+        bool lineStart = true;
+        for (size_t i = 0; i < copy.size(); ++i) {
+            const char ch = static_cast<char>(copy[i]);
+            if (lineStart && ch != ' ' && ch != '\t') {
+                if (i + 3 <= copy.size() && std::memcmp(&copy[i], "mtl", 3) == 0) copy[i] = '#';
+                lineStart = false;
+            }
+            if (ch == '\n') lineStart = true;
+        }
+        data = copy.data();
+        size = copy.size();
+    }
     Assimp::Importer importer;
     configure(importer);
     const aiScene* ai = importer.ReadFileFromMemory(data, size, kFlags, ext.c_str() + 1);

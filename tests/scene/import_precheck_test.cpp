@@ -170,6 +170,14 @@ TEST(ObjPrecheck, StatementsAssimpWouldMisreadAreRefused) {
     expectError(dir.file("c.obj"), "unknown statement 'vtx' (assimp would read it as 'v')");
 }
 
+// Found by fuzz_objply: assimp's in-memory IO crashed when an OBJ read from
+// memory named an mtllib.
+TEST(ObjPrecheck, MtllibFromMemoryDoesNotCrash) {
+    const std::string obj = "mtllib vtm\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    Scene s = loadWithAssimpFromMemory("mem.obj", ".obj", reinterpret_cast<const uint8_t*>(obj.data()), obj.size());
+    EXPECT_EQ(triangles(s), 1u);
+}
+
 TEST(ObjPrecheck, RelativeIndicesAndQuadsStillLoad) {
     TempDir dir;
     writeText(dir.file("a.obj"), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf -4 -3 -2 -1\n");
