@@ -9,14 +9,14 @@
 
 // stb_image is compiled here with static linkage: the binary also links
 // Debian's libstb (for imgui), whose global stbi_* symbols would otherwise
-// win the link and bypass this configuration. Only the formats glTF allows
-// (PNG, JPEG) and the two common in OBJ material libraries (BMP, TGA) are
-// decoded; the rest of stb's decoders stay out of reach of hostile files.
+// win the link and bypass this configuration. It decodes PNG (glTF's other
+// format) and BMP and TGA (common in OBJ material libraries); JPEG goes to
+// libjpeg-turbo, and stb's remaining decoders stay out of reach of hostile
+// files.
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_FAILURE_USERMSG
 #define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
 #define STBI_ONLY_BMP
 #define STBI_ONLY_TGA
 #if defined(__GNUC__) && !defined(__clang__)
@@ -54,8 +54,8 @@ bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& er
     }
     // stb keeps its flip flag in a global; make sure another user of the
     // library cannot leave it set and turn our images upside down.
+    if (isJpeg(data, size)) return decodeJpeg(data, size, out, error);
     stbi_set_flip_vertically_on_load(0);
-    if (!precheckJpeg(data, size, error)) return false;
     const std::vector<uint8_t> cleaned = withoutEmptyPngIdat(data, size);
     if (!cleaned.empty()) {
         data = cleaned.data();

@@ -19,6 +19,11 @@ std::optional<std::vector<uint8_t>> readFileBytes(const std::filesystem::path& f
 bool decodeImage(const uint8_t* data, size_t size, Texture& out, std::string& error);
 bool decodeImageFile(const std::filesystem::path& file, Texture& out, std::string& error);
 
+// JPEG data (after any 0xFF fill bytes, the start-of-image marker) and its
+// decoder, libjpeg-turbo (jpeg_decode.cpp); decodeImage dispatches to it.
+bool isJpeg(const uint8_t* data, size_t size);
+bool decodeJpeg(const uint8_t* data, size_t size, Texture& out, std::string& error);
+
 // Images with more texels than this are refused before any allocation: 2^28
 // RGBA8 texels are already 1 GiB.
 constexpr uint64_t kMaxImageTexels = uint64_t(1) << 28;

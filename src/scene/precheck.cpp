@@ -454,50 +454,6 @@ void precheckMtl(const std::string& path, const uint8_t* data, size_t size) {
     });
 }
 
-bool precheckJpeg(const uint8_t* data, size_t size, std::string& error) {
-    // stb skips 0xFF fill bytes before every marker, the first one included.
-    size_t pos = 0;
-    while (pos < size && data[pos] == 0xFF) ++pos;
-    if (pos == 0 || pos >= size || data[pos] != 0xD8) return true;  // not a JPEG
-    ++pos;
-    while (pos + 1 < size) {
-        if (data[pos] != 0xFF) {
-            // Entropy-coded data after a scan: look for the next marker (an
-            // 0xFF not followed by a stuffed 0x00 or a restart marker).
-            ++pos;
-            continue;
-        }
-        const uint8_t m = data[pos + 1];
-        if (m == 0xFF || m == 0x00 || (m >= 0xD0 && m <= 0xD7) || m == 0x01) {
-            pos += m == 0xFF ? 1 : 2;
-            continue;
-        }
-        if (m == 0xD9) return true;  // end of image
-        if (pos + 4 > size) return true;
-        const size_t len = (size_t(data[pos + 2]) << 8) | data[pos + 3];
-        if (len < 2) return true;  // malformed: the decoder reports it
-        if (m == 0xC4) {
-            // Define Huffman tables: per table one class/id byte, 16 code
-            // counts and as many symbols as the counts add up to. Like stb,
-            // read each table that starts inside the segment in full.
-            size_t p = pos + 4;
-            const size_t end = std::min(pos + 2 + len, size);
-            while (p < end) {
-                size_t codes = 0;
-                for (size_t k = 1; k <= 16 && p + k < size; ++k) codes += data[p + k];
-                if (codes > 256) {
-                    error = "corrupt JPEG (Huffman table with " + std::to_string(codes) + " codes, at most 256)";
-                    return false;
-                }
-                p += 17 + codes;
-            }
-        }
-        if (pos + 2 + len > size) return true;
-        pos += 2 + len;
-    }
-    return true;
-}
-
 bool precheckImageData(const uint8_t* data, size_t size, uint64_t width, uint64_t height, std::string& error) {
     const uint64_t texels = width * height;
     if (texels > uint64_t(size) * 16384) {

@@ -22,11 +22,6 @@ void precheckPly(const std::string& path, const uint8_t* data, size_t size);
 std::vector<std::string> precheckObj(const std::string& path, const uint8_t* data, size_t size);
 void precheckMtl(const std::string& path, const uint8_t* data, size_t size);
 
-// JPEG data that the system's stb_image (v2.27) would read out of bounds
-// with: a Huffman table declaring more than 256 codes overruns its size
-// array. Returns false with a reason; other damage is left to the decoder.
-bool precheckJpeg(const uint8_t* data, size_t size, std::string& error);
-
 // Whether `size` bytes can hold an image of `width` x `height` texels. stb
 // reads zeros past the end of the data, so a 64-byte TGA header claiming
 // 11055 x 20034 texels would allocate and fill 900 MB for ten seconds.
