@@ -59,8 +59,10 @@ def command(binary, folder, meta, out_exr):
     argv = [binary, "render"]
     if meta.get("scene") is not None:
         argv.append(os.path.join(folder, meta["scene"]))
-    argv += ["--width", "32", "--height", "32", "--voxels", str(meta.get("voxels", 32)), "--quiet",
-             "--out", out_exr, "--png", "none"]
+    # The smallest shadow map halves a lavapipe render (0.44 s instead of
+    # 0.83 s) and changes nothing about what the checks look for.
+    argv += ["--width", "32", "--height", "32", "--voxels", str(meta.get("voxels", 32)), "--shadow-map", "256",
+             "--quiet", "--out", out_exr, "--png", "none"]
     return argv + [sub(a) for a in meta.get("args", [])]
 
 
