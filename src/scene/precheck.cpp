@@ -455,22 +455,28 @@ void precheckMtl(const std::string& path, const uint8_t* data, size_t size) {
 }
 
 bool precheckImageData(const uint8_t* data, size_t size, uint64_t width, uint64_t height, std::string& error) {
+    auto u16 = [&](size_t at) { return uint64_t(data[at]) | uint64_t(data[at + 1]) << 8; };
+    auto u32 = [&](size_t at) { return u16(at) | u16(at + 2) << 16; };
+    const bool png = size >= 8 && data[0] == 0x89 && data[1] == 'P' && data[2] == 'N' && data[3] == 'G';
+    const bool bmp = !png && size >= 2 && data[0] == 'B' && data[1] == 'M';
+    const bool tga = !png && !bmp && !isJpeg(data, size);  // the only other format enabled
+    // The most texels one byte can describe: deflate of 1-bit rows (PNG)
+    // about 8300, a BMP RLE run 255 per 2 bytes, a TGA run packet 128 per 2.
+    const uint64_t perByte = tga ? 128 : bmp ? 256 : 16384;
     const uint64_t texels = width * height;
-    if (texels > uint64_t(size) * 16384) {
+    if (texels > uint64_t(size) * perByte) {
         error = "image header claims " + std::to_string(width) + "x" + std::to_string(height) +
                 " texels, more than " + std::to_string(size) + " bytes of data can hold";
         return false;
     }
-    auto u16 = [&](size_t at) { return uint64_t(data[at]) | uint64_t(data[at + 1]) << 8; };
-    auto u32 = [&](size_t at) { return u16(at) | u16(at + 2) << 16; };
     uint64_t need = 0;
-    if (size >= 34 && data[0] == 'B' && data[1] == 'M') {
+    if (bmp && size >= 34) {
         const uint64_t offset = u32(10), header = u32(14);
         const uint64_t bpp = header >= 40 ? u16(28) : u16(24);
         const uint64_t compression = header >= 40 ? u32(30) : 0;
         if (compression == 0 || compression == 3)  // BI_RGB, BI_BITFIELDS: every row stored
             need = offset + (bpp * width + 31) / 32 * 4 * height;
-    } else if (size >= 18 && (data[2] == 1 || data[2] == 2 || data[2] == 3)) {
+    } else if (tga && size >= 18 && (data[2] == 1 || data[2] == 2 || data[2] == 3)) {
         // Uncompressed TGA (types 9-11 are run-length encoded).
         const uint64_t cmap = data[1] ? u16(5) * ((uint64_t(data[7]) + 7) / 8) : 0;
         need = 18 + data[0] + cmap + width * height * ((uint64_t(data[16]) + 7) / 8);

@@ -25,9 +25,8 @@ void precheckMtl(const std::string& path, const uint8_t* data, size_t size);
 // Whether `size` bytes can hold an image of `width` x `height` texels. stb
 // reads zeros past the end of the data, so a 64-byte TGA header claiming
 // 11055 x 20034 texels would allocate and fill 900 MB for ten seconds.
-// Uncompressed BMP and TGA must contain every row; any format may claim at
-// most 16384 texels per byte (a 1-bit PNG of one colour, the most
-// compressible enabled case, reaches about 8300).
+// Uncompressed BMP and TGA must contain every row, and no format may claim
+// more texels per byte than its best compression reaches.
 bool precheckImageData(const uint8_t* data, size_t size, uint64_t width, uint64_t height, std::string& error);
 
 // A PNG with its zero-length IDAT chunks removed, or an empty vector when it

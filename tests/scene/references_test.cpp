@@ -187,6 +187,13 @@ TEST(Textures, HeadersClaimingMoreThanTheDataHoldsRefused) {
     small.resize(66, 7);
     EXPECT_TRUE(detail::decodeImage(small.data(), small.size(), t, error)) << error;
     EXPECT_EQ(t.width, 4u);
+    // Run-length TGA (type 10): one run packet covers at most 128 texels, so
+    // 13 KB cannot describe 4112 x 4103 (the fuzzer's third input: 10 s).
+    std::vector<uint8_t> rle(13329, 0);
+    const uint8_t rleHeader[18] = {0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x10, 0x10, 0x07, 0x10, 16, 0};
+    std::copy(rleHeader, rleHeader + 18, rle.begin());
+    EXPECT_FALSE(detail::decodeImage(rle.data(), rle.size(), t, error));
+    EXPECT_NE(error.find("claims 4112x4103 texels, more than 13329 bytes"), std::string::npos) << error;
 }
 
 TEST(Textures, LimitTextureSizeBoxFiltersKeepingAspect) {
