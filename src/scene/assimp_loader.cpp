@@ -6,6 +6,7 @@
 // OBJ/PLY carry no cameras or lights; loadScene adds the defaults.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include <assimp/Importer.hpp>
@@ -15,6 +16,7 @@
 
 #include "scene/import_util.h"
 #include "scene/load.h"
+#include "scene/precheck.h"
 
 namespace dvsgi::scene {
 
@@ -22,8 +24,8 @@ namespace {
 
 class AssimpImport {
 public:
-    AssimpImport(const std::string& path, const aiScene& ai)
-        : path_(path), dir_(std::filesystem::path(path).parent_path()), ai_(ai) {}
+    AssimpImport(const std::string& path, const aiScene& ai, bool allowOutside)
+        : path_(path), dir_(std::filesystem::path(path).parent_path()), ai_(ai), allowOutside_(allowOutside) {}
 
     Scene run() {
         scene_.source = path_;
@@ -165,11 +167,13 @@ private:
             t.name = rel;
             std::string error;
             std::optional<Texture> result;
-            if (detail::decodeImageFile(dir_ / rel, t, error)) {
+            auto file = detail::confinedPath(dir_, rel, allowOutside_, error);
+            if (!file) throw LoadError(detail::printable(path_ + ": texture '" + rel + "' " + error));
+            if (detail::decodeImageFile(*file, t, error)) {
                 result = std::move(t);
             } else {
-                scene_.warnings.push_back(path_ + ": texture '" + rel + "' could not be loaded (" + error +
-                                          "); using the material's factor instead");
+                scene_.warnings.push_back(detail::printable(path_ + ": texture '" + rel + "' could not be loaded (" +
+                                                            error + "); using the material's factor instead"));
             }
             it = images_.emplace(rel, std::move(result)).first;
         }
@@ -234,6 +238,7 @@ private:
     std::string path_;
     std::filesystem::path dir_;
     const aiScene& ai_;
+    bool allowOutside_;
     Scene scene_;
     std::vector<int> meshToPrimitive_;
     std::map<std::string, std::optional<Texture>> images_;
@@ -242,22 +247,86 @@ private:
 
 }  // namespace
 
-Scene loadWithAssimp(const std::string& path) {
-    Assimp::Importer importer;
-    // Vertex colours, bones and animations are not used by the renderer.
+namespace {
+
+// Vertex colours, bones and animations are not used by the renderer.
+void configure(Assimp::Importer& importer) {
     importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_COLORS | aiComponent_BONEWEIGHTS |
                                                             aiComponent_ANIMATIONS | aiComponent_LIGHTS |
                                                             aiComponent_CAMERAS);
-    // FlipUVs: OBJ puts v = 0 at the bottom of the image, the renderer (like
-    // glTF) at the top row. SortByPType splits off line/point meshes, which
-    // are then dropped. GenSmoothNormals only fills in missing normals.
-    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
-                           aiProcess_CalcTangentSpace | aiProcess_SortByPType | aiProcess_FlipUVs |
-                           aiProcess_RemoveComponent | aiProcess_ValidateDataStructure;
-    const aiScene* ai = importer.ReadFile(path, flags);
-    if (!ai) throw LoadError(path + ": " + importer.GetErrorString());
+}
+
+// FlipUVs: OBJ puts v = 0 at the bottom of the image, the renderer (like
+// glTF) at the top row. SortByPType splits off line/point meshes, which are
+// then dropped. GenSmoothNormals only fills in missing normals.
+constexpr unsigned kFlags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
+                            aiProcess_CalcTangentSpace | aiProcess_SortByPType | aiProcess_FlipUVs |
+                            aiProcess_RemoveComponent | aiProcess_ValidateDataStructure;
+
+void precheck(const std::string& path, const std::string& ext, const uint8_t* data, size_t size,
+              const std::filesystem::path* dir, bool allowOutside) {
+    if (ext == ".ply") {
+        detail::precheckPly(path, data, size);
+        return;
+    }
+    std::vector<std::string> mtllibs = detail::precheckObj(path, data, size);
+    if (!dir) return;
+    for (const std::string& name : mtllibs) {
+        std::string error;
+        auto file = detail::confinedPath(*dir, name, allowOutside, error);
+        if (!file) throw LoadError(detail::printable(path + ": mtllib '" + name + "' " + error));
+        // A missing MTL only costs the materials; assimp warns and goes on.
+        auto bytes = detail::readFileBytes(*file);
+        if (bytes) detail::precheckMtl(file->string(), bytes->data(), bytes->size());
+    }
+}
+
+Scene convert(const std::string& path, Assimp::Importer& importer, const aiScene* ai, bool allowOutside) {
+    if (!ai) throw LoadError(detail::printable(path + ": " + importer.GetErrorString()));
     if (ai->mNumMeshes == 0) throw LoadError(path + ": no triangles");
-    return AssimpImport(path, *ai).run();
+    return AssimpImport(path, *ai, allowOutside).run();
+}
+
+}  // namespace
+
+Scene loadWithAssimp(const std::string& path, const LoadOptions& options) {
+    std::string ext = detail::lowercase(std::filesystem::path(path).extension().string());
+    auto bytes = detail::readFileBytes(path);
+    if (!bytes) throw LoadError(path + ": cannot read the file");
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    precheck(path, ext, bytes->data(), bytes->size(), &dir, options.allowOutsideReferences);
+    Assimp::Importer importer;
+    configure(importer);
+    // PLY has no external references: parse exactly the bytes that were checked.
+    const aiScene* ai = ext == ".ply" ? importer.ReadFileFromMemory(bytes->data(), bytes->size(), kFlags, "ply")
+                                      : importer.ReadFile(path, kFlags);
+    return convert(path, importer, ai, options.allowOutsideReferences);
+}
+
+Scene loadWithAssimpFromMemory(const std::string& path, const std::string& ext, const uint8_t* data, size_t size) {
+    precheck(path, ext, data, size, nullptr, false);
+    // assimp's in-memory IO system crashes (SIGSEGV, found by fuzz_objply)
+    // when the OBJ parser asks it for an mtllib; there is no folder to find
+    // one in anyway, so such lines become comments.
+    std::vector<uint8_t> copy;
+    if (ext == ".obj") {
+        copy.assign(data, data + size);
+        bool lineStart = true;
+        for (size_t i = 0; i < copy.size(); ++i) {
+            const char ch = static_cast<char>(copy[i]);
+            if (lineStart && ch != ' ' && ch != '\t') {
+                if (i + 3 <= copy.size() && std::memcmp(&copy[i], "mtl", 3) == 0) copy[i] = '#';
+                lineStart = false;
+            }
+            if (ch == '\n') lineStart = true;
+        }
+        data = copy.data();
+        size = copy.size();
+    }
+    Assimp::Importer importer;
+    configure(importer);
+    const aiScene* ai = importer.ReadFileFromMemory(data, size, kFlags, ext.c_str() + 1);
+    return convert(path, importer, ai, false);
 }
 
 }  // namespace dvsgi::scene

@@ -112,6 +112,8 @@ float component(const View& v, const uint8_t* p) {
 
 }  // namespace
 
+size_t accessorCount(const Context& c) { return arrayOrEmpty(c, c.doc, "accessors", "document").size(); }
+
 std::pair<const uint8_t*, size_t> bufferViewBytes(const Context& c, int index) {
     const json& views = arrayOrEmpty(c, c.doc, "bufferViews", "document");
     if (index < 0 || static_cast<size_t>(index) >= views.size())
@@ -131,7 +133,7 @@ std::pair<const uint8_t*, size_t> bufferViewBytes(const Context& c, int index) {
 }
 
 std::vector<glm::vec4> readFloatAccessor(const Context& c, int index, std::initializer_list<const char*> types,
-                                         const std::string& use) {
+                                         const std::string& use, bool allowNonFinite) {
     View v = resolve(c, index, use);
     bool typeOk = false;
     for (const char* t : types) typeOk = typeOk || v.type == t;
@@ -149,8 +151,8 @@ std::vector<glm::vec4> readFloatAccessor(const Context& c, int index, std::initi
         for (int k = 0; k < n; ++k) out[i][k] = component(v, e + k * csize);
         // NaN or infinity in a position would poison the scene bounds and
         // with them the voxel grid; no valid attribute contains one.
-        if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z) ||
-            !std::isfinite(out[i].w))
+        if (!allowNonFinite && (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z) ||
+            !std::isfinite(out[i].w)))
             c.fail(use + ": accessor " + std::to_string(index) + " element " + std::to_string(i) +
                    " is not a finite number");
     }

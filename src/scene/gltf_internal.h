@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/import_util.h"
 #include "scene/load.h"
 
 namespace dvsgi::scene::gltf {
@@ -23,9 +24,10 @@ struct Context {
     bool hasGlbBin = false;
     Scene scene;
     std::vector<int> cameraMap;     // glTF camera index -> Scene camera, -1 = skipped
+    bool allowOutside = false;      // LoadOptions::allowOutsideReferences
 
-    [[noreturn]] void fail(const std::string& what) const { throw LoadError(path + ": " + what); }
-    void warn(const std::string& what) { scene.warnings.push_back(path + ": " + what); }
+    [[noreturn]] void fail(const std::string& what) const { throw LoadError(detail::printable(path + ": " + what)); }
+    void warn(const std::string& what) { scene.warnings.push_back(detail::printable(path + ": " + what)); }
 };
 
 // ---- JSON access with validation (gltf_loader.cpp) ----
@@ -56,15 +58,21 @@ std::vector<float> optFloats(const Context& c, const json& obj, const char* key,
 
 // Decodes the payload of a data: URI (base64 only). Errors name `where`.
 std::vector<uint8_t> decodeDataUri(const Context& c, const std::string& uri, const std::string& where);
-// Resolves a relative URI (percent-decoded) against the glTF's folder.
-std::filesystem::path resolveUri(const Context& c, const std::string& uri);
+// Percent-decodes a relative URI and resolves it against the glTF's folder,
+// confined to it unless allowOutside. Errors name `where` and the URI.
+std::filesystem::path resolveUri(const Context& c, const std::string& uri, const std::string& where);
 
 // ---- Accessors (gltf_accessors.cpp) ----
 
+// The number of accessors in the document, for index checks.
+size_t accessorCount(const Context& c);
+
 // Reads accessor `index` as float tuples (normalized integers mapped to
 // [0,1] / [-1,1]). `types` lists the accepted accessor types, e.g. {"VEC3"}.
+// Non-finite values are an error unless `allowNonFinite` (normals, which
+// validateScene repairs).
 std::vector<glm::vec4> readFloatAccessor(const Context& c, int index, std::initializer_list<const char*> types,
-                                         const std::string& use);
+                                         const std::string& use, bool allowNonFinite = false);
 std::vector<uint32_t> readIndexAccessor(const Context& c, int index, const std::string& use);
 // Bytes of buffer view `index` (validated against its buffer).
 std::pair<const uint8_t*, size_t> bufferViewBytes(const Context& c, int index);

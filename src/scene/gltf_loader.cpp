@@ -142,19 +142,30 @@ std::vector<uint8_t> decodeDataUri(const Context& c, const std::string& uri, con
     return out;
 }
 
-std::filesystem::path resolveUri(const Context& c, const std::string& uri) {
+std::filesystem::path resolveUri(const Context& c, const std::string& uri, const std::string& where) {
+    // A scheme (http:, file:, ...) other than data: is nothing this importer
+    // can fetch; say so instead of looking for a file named "http:".
+    size_t colon = uri.find(':');
+    if (colon != std::string::npos && colon > 1 && std::isalpha(static_cast<unsigned char>(uri[0])) &&
+        uri.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789+.-") == colon)
+        c.fail(where + ": URI '" + uri + "' has an unsupported scheme (only relative paths and data: URIs)");
     // URIs are percent-encoded (e.g. spaces as %20); file names are not.
     std::string decoded;
     for (size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-            decoded.push_back(static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
-            i += 2;
-        } else {
+        if (uri[i] != '%') {
             decoded.push_back(uri[i]);
+            continue;
         }
+        if (i + 2 >= uri.size() || !std::isxdigit(static_cast<unsigned char>(uri[i + 1])) ||
+            !std::isxdigit(static_cast<unsigned char>(uri[i + 2])))
+            c.fail(where + ": URI '" + uri + "' has a malformed percent escape");
+        decoded.push_back(static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+        i += 2;
     }
-    return c.dir / std::filesystem::path(decoded);
+    std::string error;
+    auto resolved = detail::confinedPath(c.dir, decoded, c.allowOutside, error);
+    if (!resolved) c.fail(where + ": URI '" + uri + "' " + error);
+    return *resolved;
 }
 
 namespace {
@@ -211,7 +222,7 @@ void loadBuffers(Context& c) {
             if (uri.rfind("data:", 0) == 0) {
                 data = decodeDataUri(c, uri, where);
             } else {
-                auto bytes = detail::readFileBytes(resolveUri(c, uri));
+                auto bytes = detail::readFileBytes(resolveUri(c, uri, where));
                 if (!bytes) c.fail(where + ": cannot read '" + uri + "'");
                 data = std::move(*bytes);
             }
@@ -230,23 +241,20 @@ void loadBuffers(Context& c) {
 
 namespace dvsgi::scene {
 
-Scene loadGltf(const std::string& path) {
-    gltf::Context c;
-    c.path = path;
-    c.dir = std::filesystem::path(path).parent_path();
-    c.scene.source = path;
+namespace {
 
-    auto file = detail::readFileBytes(path);
-    if (!file) c.fail("no such file");
+Scene parseGltf(gltf::Context& c, const std::vector<uint8_t>& file) {
     std::string jsonText;
-    if (file->size() >= 4 && std::memcmp(file->data(), "glTF", 4) == 0) {
-        jsonText = gltf::parseGlb(c, *file);
+    if (file.size() >= 4 && std::memcmp(file.data(), "glTF", 4) == 0) {
+        jsonText = gltf::parseGlb(c, file);
     } else {
-        jsonText.assign(file->begin(), file->end());
+        jsonText.assign(file.begin(), file.end());
     }
     try {
         c.doc = gltf::json::parse(jsonText);
-    } catch (const gltf::json::parse_error& e) {
+    } catch (const gltf::json::exception& e) {
+        // parse_error and out_of_range (a number beyond double, e.g. 1e400)
+        // alike: the reader must learn which file is at fault.
         c.fail(std::string("invalid JSON: ") + e.what());
     }
     if (!c.doc.is_object()) c.fail("invalid glTF: the top level is not a JSON object");
@@ -280,6 +288,28 @@ Scene loadGltf(const std::string& path) {
         c.fail("out of memory (corrupt sizes?)");
     }
     return std::move(c.scene);
+}
+
+}  // namespace
+
+Scene loadGltf(const std::string& path, const LoadOptions& options) {
+    gltf::Context c;
+    c.path = path;
+    c.dir = std::filesystem::path(path).parent_path();
+    c.scene.source = path;
+    c.allowOutside = options.allowOutsideReferences;
+    auto file = detail::readFileBytes(path);
+    if (!file) c.fail("no such file");
+    return parseGltf(c, *file);
+}
+
+Scene loadGltfFromMemory(const std::string& path, const std::vector<uint8_t>& bytes, const LoadOptions& options) {
+    gltf::Context c;
+    c.path = path;
+    c.dir = std::filesystem::path(path).parent_path();
+    c.scene.source = path;
+    c.allowOutside = options.allowOutsideReferences;
+    return parseGltf(c, bytes);
 }
 
 }  // namespace dvsgi::scene

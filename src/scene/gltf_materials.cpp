@@ -50,7 +50,7 @@ bool decodeGltfImage(Context& c, int index, Texture& out, std::string& error) {
         }
         return detail::decodeImage(bytes.data(), bytes.size(), out, error);
     }
-    return detail::decodeImageFile(resolveUri(c, uri), out, error);
+    return detail::decodeImageFile(resolveUri(c, uri, where), out, error);
 }
 
 class TextureResolver {

@@ -44,8 +44,10 @@ Primitive loadPrimitive(Context& c, const json& pj, const std::string& where, si
     if (!has(attrs, "POSITION")) c.fail(where + ": missing POSITION attribute");
 
     auto attribute = [&](const char* name, std::initializer_list<const char*> types) {
-        int idx = reqIndex(c, attrs, name, SIZE_MAX, where, "accessor");
-        return readFloatAccessor(c, idx, types, where + " " + name);
+        int idx = reqIndex(c, attrs, name, accessorCount(c), where, "accessor");
+        // A NaN normal shades nothing; validateScene swaps in the face normal.
+        const bool normal = std::string(name) == "NORMAL";
+        return readFloatAccessor(c, idx, types, where + " " + name, normal);
     };
 
     Primitive p;
@@ -76,7 +78,7 @@ Primitive loadPrimitive(Context& c, const json& pj, const std::string& where, si
     }
 
     if (has(pj, "indices")) {
-        int idx = reqIndex(c, pj, "indices", SIZE_MAX, where, "accessor");
+        int idx = reqIndex(c, pj, "indices", accessorCount(c), where, "accessor");
         p.indices = readIndexAccessor(c, idx, where + " indices");
     } else {
         p.indices.resize(pos.size());

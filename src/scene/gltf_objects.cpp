@@ -1,6 +1,7 @@
 // glTF cameras, KHR_lights_punctual lights, the node hierarchy, the default
 // scene and animations.
 #include <cmath>
+#include <cstdint>
 
 #include "scene/gltf_internal.h"
 #include "scene/import_util.h"
@@ -84,9 +85,13 @@ void loadNodes(Context& c) {
             auto r = optFloats(c, nj, "rotation", 4, {0, 0, 0, 1}, where);
             auto s = optFloats(c, nj, "scale", 3, {1, 1, 1}, where);
             n.translation = glm::vec3(t[0], t[1], t[2]);
-            glm::quat q(r[3], r[0], r[1], r[2]);
-            float len = glm::length(q);
-            n.rotation = len > 0.0f ? q / len : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+            // In double: the squared length of a quaternion near FLT_MAX
+            // overflows float and would turn the rotation into zeros.
+            double len = std::sqrt(double(r[0]) * r[0] + double(r[1]) * r[1] + double(r[2]) * r[2] +
+                                   double(r[3]) * r[3]);
+            n.rotation = len > 0.0 && std::isfinite(len)
+                             ? glm::quat(float(r[3] / len), float(r[0] / len), float(r[1] / len), float(r[2] / len))
+                             : glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
             n.scale = glm::vec3(s[0], s[1], s[2]);
         }
         n.mesh = optIndex(c, nj, "mesh", c.scene.meshes.size(), where, "mesh");
@@ -108,13 +113,24 @@ void loadNodes(Context& c) {
             child.parent = static_cast<int>(i);
         }
     }
-    // With one parent per node, a cycle is a chain of parents that never ends.
+    // With one parent per node, a cycle is a chain of parents that never
+    // ends. Each chain is walked only until it meets a node already known to
+    // reach a root, so the whole check is linear in the node count (a long
+    // parent chain walked from every node would be quadratic).
+    enum : uint8_t { Unknown, OnPath, ReachesRoot };
+    std::vector<uint8_t> state(nodes.size(), Unknown);
+    std::vector<size_t> path;
     for (size_t i = 0; i < nodes.size(); ++i) {
-        int p = c.scene.nodes[i].parent;
-        for (size_t steps = 0; p >= 0; ++steps) {
-            if (steps > nodes.size()) c.fail("node " + std::to_string(i) + " is part of a cycle in the hierarchy");
+        path.clear();
+        int p = static_cast<int>(i);
+        while (p >= 0 && state[static_cast<size_t>(p)] == Unknown) {
+            state[static_cast<size_t>(p)] = OnPath;
+            path.push_back(static_cast<size_t>(p));
             p = c.scene.nodes[static_cast<size_t>(p)].parent;
         }
+        if (p >= 0 && state[static_cast<size_t>(p)] == OnPath)
+            c.fail("node " + std::to_string(p) + " is part of a cycle in the hierarchy");
+        for (size_t n : path) state[n] = ReachesRoot;
     }
 }
 
@@ -168,8 +184,8 @@ void loadAnimations(Context& c) {
             else if (interp == "STEP") ch.interpolation = Interpolation::Step;
             else if (interp == "CUBICSPLINE") ch.interpolation = Interpolation::CubicSpline;
             else c.fail(sw + ": unknown interpolation '" + interp + "'");
-            int in = reqIndex(c, sj, "input", SIZE_MAX, sw, "accessor");
-            int out = reqIndex(c, sj, "output", SIZE_MAX, sw, "accessor");
+            int in = reqIndex(c, sj, "input", accessorCount(c), sw, "accessor");
+            int out = reqIndex(c, sj, "output", accessorCount(c), sw, "accessor");
             for (const glm::vec4& t : readFloatAccessor(c, in, {"SCALAR"}, sw + " input")) ch.times.push_back(t.x);
             for (size_t i = 1; i < ch.times.size(); ++i)
                 if (ch.times[i] < ch.times[i - 1]) c.fail(sw + ": input times are not ascending");

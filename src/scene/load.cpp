@@ -25,18 +25,29 @@ void ensureValidMaterials(Scene& scene) {
 
 }  // namespace
 
-Scene loadScene(const std::string& path) {
+Scene loadScene(const std::string& path, const LoadOptions& options) {
+    namespace fs = std::filesystem;
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw LoadError(path + ": no such file");
-    std::string ext = detail::lowercase(std::filesystem::path(path).extension().string());
+    const fs::file_status st = fs::status(path, ec);
+    // Say what the path is when it is not a file: "no such file" for a
+    // directory or a FIFO sends the user looking in the wrong place.
+    if (st.type() == fs::file_type::not_found || (ec && st.type() == fs::file_type::none))
+        throw LoadError(detail::printable(path + ": no such file"));
+    if (st.type() == fs::file_type::directory)
+        throw LoadError(detail::printable(path + ": is a directory, not a scene file"));
+    if (st.type() != fs::file_type::regular)
+        throw LoadError(detail::printable(path + ": is not a regular file (a FIFO, socket or device cannot be a scene)"));
+    std::string ext = detail::lowercase(fs::path(path).extension().string());
     Scene scene;
     if (ext == ".gltf" || ext == ".glb") {
-        scene = loadGltf(path);
+        scene = loadGltf(path, options);
     } else if (ext == ".obj" || ext == ".ply") {
-        scene = loadWithAssimp(path);
+        scene = loadWithAssimp(path, options);
     } else {
-        throw LoadError(path + ": unsupported scene format '" + ext + "' (supported: .gltf .glb .obj .ply)");
+        throw LoadError(detail::printable(path + ": unsupported scene format '" + ext +
+                                          "' (supported: .gltf .glb .obj .ply)"));
     }
+    validateScene(scene);
     ensureValidMaterials(scene);
     addDefaults(scene);
     return scene;

@@ -179,4 +179,10 @@ void addCircularPath(Scene& scene, int node, glm::vec3 center, float radius, flo
 // bounds from +Z, and a directional "sun" of irradiance 3 W/m^2 (docs/UNITS.md).
 void addDefaults(Scene& scene);
 
+// Box-filters every texture wider or taller than `maxDim` down to fit it,
+// keeping the aspect ratio (sRGB textures are averaged in linear light). The
+// renderer passes the device's maxImageDimension2D. One warning per texture
+// that was shrunk is appended to `warnings` when it is not null.
+void limitTextureSize(Scene& scene, uint32_t maxDim, std::vector<std::string>* warnings);
+
 }  // namespace dvsgi::scene
