@@ -125,6 +125,8 @@ const std::vector<OptionSpec>& optionSpecs() {
          }},
         {"--metrics", true,
          [](RenderOptions& o, std::string_view, std::string_view v) { o.metricsPath = v; }},
+        {"--allow-outside-references", false,
+         [](RenderOptions& o, std::string_view, std::string_view) { o.allowOutsideReferences = true; }},
         {"--device", true,
          [](RenderOptions& o, std::string_view, std::string_view v) { o.device = v; }},
         {"--validate", false,
@@ -472,7 +474,8 @@ std::string usageText() {
            "  dvsgi help | --help | -h         this text\n"
            "  dvsgi --version                  print the version\n"
            "\n"
-           "SCENE is a glTF 2.0 file (.gltf/.glb); without one the built-in Cornell box is used.\n"
+           "SCENE is a glTF 2.0 (.gltf/.glb), OBJ (+MTL) or PLY file; without one the built-in\n"
+           "Cornell box is used.\n"
            "Options take their value as '--opt VALUE' or '--opt=VALUE'; '--' ends the options.\n"
            "\n"
            "Options:\n"
@@ -495,6 +498,8 @@ std::string usageText() {
            "                       preview = sRGB(clamp(radiance * 2^EV, 0, 1)); -20..20 (default 0).\n"
            "                       The EXR is never scaled.\n"
            "  --metrics FILE.json  write timings and frame statistics as JSON (default: none)\n"
+           "  --allow-outside-references  let a scene name buffers, images, MTL files or textures\n"
+           "                       outside its own folder (refused by default)\n"
            "  --device NAME        use the first Vulkan device whose name contains NAME\n"
            "                       (default: the best available device)\n"
            "  --validate           enable the Khronos validation layer (default off)\n"

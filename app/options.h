@@ -16,6 +16,7 @@ enum class ViewKind { Final, VoxelAlbedo, VoxelNormal, VoxelEmission, VoxelRadia
 // Everything `dvsgi render` accepts. Defaults are the documented ones in --help.
 struct RenderOptions {
     std::string scene;            // empty = built-in Cornell box
+    bool allowOutsideReferences = false;  // files a scene names may lie outside its folder
     std::string outExr = "out/render.exr";
     std::string outPng;           // empty = outExr with .png; "none" = no preview
     uint32_t width = 512;

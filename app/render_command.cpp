@@ -66,8 +66,10 @@ void markDynamic(scene::Scene& s, const std::vector<std::string>& names) {
 
 // Loads `path`, scales it to `size` metres and sends it round a circle on the
 // floor of the scene's bounds as a dynamic object.
-void addMovingModel(scene::Scene& s, const std::string& path, float size) {
-    const scene::Scene model = scene::loadScene(path);
+void addMovingModel(scene::Scene& s, const std::string& path, float size, bool allowOutside) {
+    scene::LoadOptions lo;
+    lo.allowOutsideReferences = allowOutside;
+    const scene::Scene model = scene::loadScene(path, lo);
     const scene::Bounds sb = scene::worldBounds(s, scene::drawItems(s, scene::worldMatrices(s)));
     const scene::Bounds mb = scene::worldBounds(model, scene::drawItems(model, scene::worldMatrices(model)));
     if (!sb.valid() || !mb.valid()) throw std::runtime_error("--add-model: " + path + " or the scene has no geometry");
@@ -215,9 +217,11 @@ nlohmann::json parametersJson(const RenderOptions& o) {
 }
 
 scene::Scene loadForOptions(const RenderOptions& o) {
-    scene::Scene scene = o.scene.empty() ? scene::builtinCornellBox() : scene::loadScene(o.scene);
+    scene::LoadOptions lo;
+    lo.allowOutsideReferences = o.allowOutsideReferences;
+    scene::Scene scene = o.scene.empty() ? scene::builtinCornellBox() : scene::loadScene(o.scene, lo);
     markDynamic(scene, o.dynamicNodes);
-    if (!o.addModel.empty()) addMovingModel(scene, o.addModel, o.addModelSize);
+    if (!o.addModel.empty()) addMovingModel(scene, o.addModel, o.addModelSize, o.allowOutsideReferences);
     return scene;
 }
 
@@ -269,7 +273,20 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     return rs;
 }
 
+// A --metrics path whose folder cannot be made fails before anything is
+// rendered or written, naming the option and the path.
+void checkMetricsPath(const std::string& path) {
+    if (path.empty()) return;
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+    if (ec || (!parent.empty() && !std::filesystem::is_directory(parent)))
+        throw image::IoError("--metrics: cannot create the folder of " + path + ": " +
+                             (ec ? ec.message() : "not a directory"));
+}
+
 int runRender(const RenderOptions& o) {
+    checkMetricsPath(o.metricsPath);
     if (!o.aovExr.empty() && o.view != ViewKind::Final)
         throw std::runtime_error("--aov: the terms exist only for the final image, not for --view voxels:...");
     const scene::Scene scene = loadForOptions(o);

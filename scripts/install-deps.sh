@@ -10,7 +10,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
   libassimp-dev nlohmann-json3-dev libstb-dev libglm-dev
   libglfw3-dev libimgui-dev xvfb xauth
-  libgtest-dev zlib1g-dev libopenexr-dev libimath-dev
+  libgtest-dev zlib1g-dev libjpeg-dev libopenexr-dev libimath-dev
   python3 python3-numpy python3-openimageio
 )
 

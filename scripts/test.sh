@@ -7,4 +7,11 @@ bash scripts/install-deps.sh
 build=${DVSGI_TEST_BUILD_DIR:-build-tests}
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDVSGI_BUILD_TESTS=ON
 cmake --build "$build" -j "$(nproc)"
-ctest --test-dir "$build" --output-on-failure --timeout 900 "$@"
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+ctest --test-dir "$build" --output-on-failure --timeout 900 "$@" 2>&1 | tee "$log"
+# A skipped test checked nothing: the suite fails on any skip, not only on failures.
+if grep -q "The following tests did not run" "$log"; then
+  echo "test.sh: some tests were skipped (listed above); the suite counts that as a failure" >&2
+  exit 1
+fi

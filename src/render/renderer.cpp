@@ -60,6 +60,13 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
                                              entry.first + "'");
     }
     const uint32_t iw = settings.width * settings.supersample, ih = settings.height * settings.supersample;
+    const uint32_t maxDim = ctx.properties.limits.maxImageDimension2D;
+    if (iw > maxDim || ih > maxDim)
+        throw std::runtime_error("--width/--height x --supersample: the internal image " + std::to_string(iw) + "x" +
+                                 std::to_string(ih) + " exceeds " + ctx.deviceName + "'s limit of " +
+                                 std::to_string(maxDim) + " pixels per side");
+    // Textures larger than the device allows are box-filtered down (with a warning).
+    scene::limitTextureSize(scene_, maxDim, &warnings_);
     sceneGpu_ = std::make_unique<SceneGpu>(ctx, scene);
     uploadLights();
     frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),

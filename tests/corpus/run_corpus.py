@@ -25,14 +25,6 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # limits). Each still runs: it must fail the check as recorded here, and a
 # case that starts passing is reported so that it is removed from this list.
 EXPECTED_FAILURES = {
-    "png_70000x1": "renderer must call scene::limitTextureSize with maxImageDimension2D (SIGSEGV in the driver)",
-    "png_1x70000": "renderer must call scene::limitTextureSize with maxImageDimension2D (SIGSEGV in the driver)",
-    "map_kd_70000x1": "renderer must call scene::limitTextureSize with maxImageDimension2D (SIGSEGV in the driver)",
-    "add_model_70000x1_texture": "renderer must call scene::limitTextureSize (the --add-model texture too)",
-    "huge_supersampled_target": "app/renderer: --width x --supersample beyond the device's image limit is not "
-                                "checked (131072-wide target)",
-    "metrics_under_a_file": "app: --metrics into a path under a file prints a filesystem exception naming "
-                            "neither option nor path",
 }
 
 
