@@ -10,23 +10,6 @@ using namespace scene_test;
 
 namespace {
 
-std::string loadError(const std::string& path) {
-    try {
-        loadScene(path);
-    } catch (const LoadError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no LoadError for " << path;
-    return {};
-}
-
-void expectError(const std::string& path, const std::string& fragment) {
-    std::string msg = loadError(path);
-    EXPECT_EQ(msg.rfind(path, 0), 0u) << "message does not start with the path: " << msg;
-    EXPECT_NE(msg.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
-}
-
 const char* kPlyHeader = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
 

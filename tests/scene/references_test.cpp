@@ -11,31 +11,6 @@ using namespace scene_test;
 
 namespace {
 
-GltfBuilder triangleScene() {
-    GltfBuilder b;
-    b.addTriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2});
-    b.addNode({{"mesh", 0}});
-    b.doc["scenes"] = json::array({{{"nodes", {0}}}});
-    return b;
-}
-
-std::string loadError(const std::string& path, const LoadOptions& o = {}) {
-    try {
-        loadScene(path, o);
-    } catch (const LoadError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no LoadError for " << path;
-    return {};
-}
-
-void expectError(const std::string& path, const std::string& fragment) {
-    std::string msg = loadError(path);
-    EXPECT_EQ(msg.rfind(path, 0), 0u) << "message does not start with the path: " << msg;
-    EXPECT_NE(msg.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
-}
-
 // A scene in dir/scene whose buffer 0 has URI `uri`; the buffer's bytes are
 // written to dir/<binFile> (relative to dir, not to the scene).
 std::string sceneWithBufferUri(const TempDir& dir, const std::string& uri, const std::string& binFile) {

@@ -14,31 +14,6 @@ using namespace scene_test;
 
 namespace {
 
-GltfBuilder triangleScene() {
-    GltfBuilder b;
-    b.addTriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2});
-    b.addNode({{"mesh", 0}});
-    b.doc["scenes"] = json::array({{{"nodes", {0}}}});
-    return b;
-}
-
-std::string loadError(const std::string& path) {
-    try {
-        loadScene(path);
-    } catch (const LoadError& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "no LoadError for " << path;
-    return {};
-}
-
-void expectError(const std::string& path, const std::string& fragment) {
-    std::string msg = loadError(path);
-    EXPECT_EQ(msg.rfind(path, 0), 0u) << "message does not start with the path: " << msg;
-    EXPECT_NE(msg.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
-}
-
 // triangleScene plus light 0 on node 1.
 GltfBuilder withLight(const json& light) {
     GltfBuilder b = triangleScene();

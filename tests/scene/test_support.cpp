@@ -8,6 +8,8 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb/stb_image_write.h>
 
+#include <gtest/gtest.h>
+
 namespace scene_test {
 
 TempDir::TempDir() {
@@ -180,6 +182,31 @@ std::vector<uint8_t> GltfBuilder::glbBytes() {
 std::string GltfBuilder::writeGlb(const TempDir& dir, const std::string& name) {
     writeBytes(dir.file(name), glbBytes());
     return dir.file(name);
+}
+
+GltfBuilder triangleScene() {
+    GltfBuilder b;
+    b.addTriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 2});
+    b.addNode({{"mesh", 0}});
+    b.doc["scenes"] = json::array({{{"nodes", {0}}}});
+    return b;
+}
+
+std::string loadError(const std::string& path, const dvsgi::scene::LoadOptions& options) {
+    try {
+        dvsgi::scene::loadScene(path, options);
+    } catch (const dvsgi::scene::LoadError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no LoadError for " << path;
+    return {};
+}
+
+void expectError(const std::string& path, const std::string& fragment) {
+    std::string msg = loadError(path);
+    EXPECT_EQ(msg.rfind(path, 0), 0u) << "message does not start with the path: " << msg;
+    EXPECT_NE(msg.find(fragment), std::string::npos) << "'" << fragment << "' not in: " << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << "message is not one line: " << msg;
 }
 
 }  // namespace scene_test

@@ -11,6 +11,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "scene/load.h"
+
 namespace scene_test {
 
 namespace fs = std::filesystem;
@@ -68,5 +70,14 @@ public:
     std::vector<uint8_t> glbBytes();
     std::string writeGlb(const TempDir& dir, const std::string& name);
 };
+
+// One triangle on a node of the default scene.
+GltfBuilder triangleScene();
+
+// Loads `path` and returns the LoadError message; fails the test if loading
+// succeeds or throws anything else.
+std::string loadError(const std::string& path, const dvsgi::scene::LoadOptions& options = {});
+// The error starts with the path, contains `fragment` and is one line.
+void expectError(const std::string& path, const std::string& fragment);
 
 }  // namespace scene_test
