@@ -250,22 +250,18 @@ render::RenderSettings settingsForOptions(const RenderOptions& o) {
     rs.voxelLight.softKappa = o.softKappa;
     rs.voxelLight.occlusion = occlusionMode(o.voxelOcclusion);
     for (const auto& [name, mode] : o.lightOcclusion) rs.lightOcclusion.emplace_back(name, occlusionMode(mode));
-    rs.gather.coneSet = o.cones;
-    rs.gather.stepFactor = o.coneStep;
-    rs.gather.minStepVoxels = o.coneMinStep;
-    rs.gather.maxDistance = o.maxDistance;
-    rs.gather.normalOffsetVoxels = o.coneOffset;
-    rs.gather.clearance = o.coneClearance;
-    rs.voxelLight.bounceCone.surface.x = o.coneClearance;
+    rs.cones.coneSet = o.cones;
+    rs.cones.stepFactor = o.coneStep;
+    rs.cones.minStepVoxels = o.coneMinStep;
+    rs.cones.maxDistance = o.maxDistance;
+    rs.cones.offsetVoxels = o.coneOffset;
+    rs.cones.clearance = o.coneClearance;
     rs.gather.aoLambda = o.aoLambda;
     rs.gather.specular = o.specular;
     rs.gather.minSpecularDegrees = o.minSpecularAngle;
     rs.gather.traceScale = o.traceScale;
     rs.shadowCones.enabled = o.shadows == "cone";
     rs.shadowCones.apertureDegrees = o.shadowAperture;
-    rs.shadowCones.normalOffsetVoxels = o.coneOffset;
-    rs.shadowCones.cone.trace = glm::vec4(o.coneStep, o.coneMinStep, 0.0f, 1.0f);
-    rs.shadowCones.cone.surface.x = o.coneClearance;
     rs.applyAO = o.ao;
     static const char* terms[] = {"full", "direct", "indirect", "specular", "ao", "shadow"};
     for (uint32_t i = 0; i < 6; ++i)

@@ -52,11 +52,11 @@ void main() {
     vec3 V = normalize(frame.cameraPos.xyz - P);
     float metallic = base.a, roughness = nr.w;
     // Offset along the normal so the surface does not sample its own voxels.
-    float originHeight = pc.params.z * grid.originSize.w;
+    float originHeight = pc.cone.surface.z * grid.originSize.w;
     vec3 origin = P + N * originHeight;
 
     float occlusion;
-    vec3 E = pc.flags.x == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
+    vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
                                        : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
     vec3 diffuse = base.rgb / PI * E * (1.0 - metallic);
     imageStore(outDiffuse, px, vec4(diffuse, 1.0 - occlusion));

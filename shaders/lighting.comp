@@ -26,8 +26,8 @@ layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D direct
 layout(set = 0, binding = BIND_LIGHT_OUT_SHADOW, r16f) uniform writeonly image2D outShadow;
 
 struct LightingPush {
-    ConeParams cone;  // shadow cones: step factor, min step, (max distance unused), first sample
-    vec4 shadow;      // x 1 = shadow cones instead of maps, y tan(half aperture), z normal offset (voxels)
+    ConeParams cone;  // the shared cone settings (gpuCone); trace.z = the longest cone (m)
+    vec4 shadow;      // x 1 = shadow cones instead of maps, y tan(half aperture)
 };
 layout(push_constant) uniform Push { LightingPush pc; };
 
@@ -38,8 +38,8 @@ layout(push_constant) uniform Push { LightingPush pc; };
 
 float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     ConeParams p = pc.cone;
-    p.trace.z = min(dist, 2.0 * grid.originSize.w * float(grid.dims.x));
-    float originHeight = pc.shadow.z * grid.originSize.w;
+    p.trace.z = min(dist, p.trace.z);
+    float originHeight = pc.cone.surface.z * grid.originSize.w;
     vec3 origin = P + N * originHeight;
     return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p).a;
 }
@@ -53,10 +53,15 @@ float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emit
     // cone arriving obliquely crosses for longer.
     float footprint = 2.0 * max(s, 2.0 * dist * tanHalf) + s;
     float cosE = max(abs(dot(emitterNormal, L)), 0.2);
-    p.trace.z = min(dist - footprint / cosE, 2.0 * s * float(grid.dims.x));
+    // The cone starts off the surface, so it aims at the emitter from there
+    // and its length is measured from there.
+    float originHeight = pc.cone.surface.z * s;
+    vec3 origin = P + N * originHeight;
+    vec3 toEmitter = P + L * dist - origin;
+    float reach = length(toEmitter);
+    p.trace.z = min(reach - footprint / cosE, p.trace.z);
     if (p.trace.z <= 0.0) return 1.0;
-    float originHeight = pc.shadow.z * s;
-    return 1.0 - traceCone(P + N * originHeight, N, originHeight, L, tanHalf, p).a;
+    return 1.0 - traceCone(origin, N, originHeight, toEmitter / reach, tanHalf, p).a;
 }
 
 void main() {

@@ -13,9 +13,9 @@ DVSGI_CONST(uint, CONE_SET_16, 16);  // sixteen cones over the hemisphere
 
 struct GatherPush {
     ConeParams cone;  // step factor, min step, max distance, first sample distance
-    vec4 params;      // x diffuse cone half-angle tangent, y AO lambda (per voxel of distance),
-                      // z origin offset along the normal (voxels), w minimum specular half-angle tangent
-    uvec4 flags;      // x cone set (6/16), y specular on, z trace width, w trace height
+    vec4 params;      // x unused, y AO lambda (per voxel of distance), z unused,
+                      // w minimum specular half-angle tangent
+    uvec4 flags;      // x unused, y specular on, z trace width, w trace height
 };
 DVSGI_CHECK_SIZE(GatherPush, 64);
 

@@ -99,7 +99,8 @@ DVSGI_CHECK_SIZE(AnisoPush, 16);
 // the per-pixel gather).
 struct ConeParams {
     vec4 trace;    // x step factor beta, y minimum step (voxels), z maximum distance (m), w first sample (voxels)
-    vec4 surface;  // x clearance K (0 = off), y surface thickness (voxels): see traceConeAO
+    vec4 surface;  // x clearance K (0 = off), y surface thickness (voxels): see traceConeAO,
+                   // z origin offset along the normal (voxels), w aperture set (CONE_SET_*)
 };
 DVSGI_CHECK_SIZE(ConeParams, 32);
 

@@ -99,19 +99,15 @@ render::RenderSettings toRenderSettings(const Settings& s) {
     rs.voxelLight.convergence = s.bounceConvergence;
     rs.voxelLight.maxBounces = s.maxBounces;
     rs.voxelLight.occlusion = vxgi::Occlusion::PerLight;
-    rs.voxelLight.bounceCone.surface.x = kClearance;
-    rs.gather.coneSet = s.cones;
-    rs.gather.stepFactor = kConeStep;
-    rs.gather.minStepVoxels = kMinStep;
-    rs.gather.maxDistance = 0.0f;
-    rs.gather.normalOffsetVoxels = kOffset;
-    rs.gather.clearance = kClearance;
+    rs.cones.coneSet = s.cones;
+    rs.cones.stepFactor = kConeStep;
+    rs.cones.minStepVoxels = kMinStep;
+    rs.cones.maxDistance = 0.0f;
+    rs.cones.offsetVoxels = kOffset;
+    rs.cones.clearance = kClearance;
     rs.gather.aoLambda = s.aoLambda;
     rs.gather.specular = s.specular;
     rs.gather.traceScale = s.traceScale;
-    rs.shadowCones.normalOffsetVoxels = kOffset;
-    rs.shadowCones.cone.trace = glm::vec4(kConeStep, kMinStep, 0.0f, 1.0f);
-    rs.shadowCones.cone.surface.x = kClearance;
     rs.applyAO = s.ao;
     static_assert(uint32_t(Output::Shadow) == shader::TERM_SHADOW && uint32_t(Output::AO) == shader::TERM_AO &&
                   uint32_t(Output::Full) == shader::TERM_FULL);

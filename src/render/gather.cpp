@@ -37,13 +37,6 @@ gpu::Image termImage(const gpu::Context& ctx, uint32_t w, uint32_t h, const char
 
 }  // namespace
 
-sh::ConeParams coneParams(const GatherSettings& s, const vxgi::VoxelVolumes& v) {
-    const float diagonal = v.grid.voxelSize * float(v.grid.n) * 1.7320508f;
-    return sh::ConeParams{glm::vec4(s.stepFactor, s.minStepVoxels, s.maxDistance > 0.0f ? s.maxDistance : diagonal,
-                                    s.firstSampleVoxels),
-                          glm::vec4(s.clearance, sh::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
-}
-
 GatherPass::GatherPass(const gpu::Context& ctx, uint32_t width, uint32_t height, float traceScale)
     : traceWidth(std::max(1u, uint32_t(std::lround(width * traceScale)))),
       traceHeight(std::max(1u, uint32_t(std::lround(height * traceScale)))),
@@ -87,7 +80,8 @@ GatherPass::GatherPass(const gpu::Context& ctx, uint32_t width, uint32_t height,
 }
 
 void GatherPass::record(VkCommandBuffer cmd, const GBufferPass& g, const vxgi::VoxelVolumes& v, VkSampler volumeSampler,
-                        const gpu::Buffer& frame, const GatherSettings& s, gpu::GpuTimers* timers) const {
+                        const gpu::Buffer& frame, const GatherSettings& s, const vxgi::ConeSettings& cone,
+                        gpu::GpuTimers* timers) const {
     const bool reduced = bool(lowDiffuse_);
     const gpu::Image& outD = reduced ? lowDiffuse_ : diffuse;
     const gpu::Image& outS = reduced ? lowSpecular_ : specular;
@@ -111,10 +105,9 @@ void GatherPass::record(VkCommandBuffer cmd, const GBufferPass& g, const vxgi::V
             .storageImage(sh::BIND_GATHER_OUT_SPECULAR, outS.view())
             .push(ctx_, cmd, gather_);
         sh::GatherPush push{};
-        push.cone = coneParams(s, v);
-        push.params = glm::vec4(0.0f, s.aoLambda, s.normalOffsetVoxels,
-                                std::tan(glm::radians(s.minSpecularDegrees)));
-        push.flags = glm::uvec4(s.coneSet, s.specular ? 1u : 0u, traceWidth, traceHeight);
+        push.cone = vxgi::gpuCone(cone, v.grid);
+        push.params = glm::vec4(0.0f, s.aoLambda, 0.0f, std::tan(glm::radians(s.minSpecularDegrees)));
+        push.flags = glm::uvec4(0u, s.specular ? 1u : 0u, traceWidth, traceHeight);
         gpu::pushConstants(cmd, gather_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(traceWidth, 8), gpu::groupCount(traceHeight, 8), 1);
     }

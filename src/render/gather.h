@@ -5,6 +5,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "shared/gather_data.h"
+#include "vxgi/cone_settings.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
@@ -17,21 +18,13 @@ namespace dvsgi::render {
 
 class GBufferPass;
 
+// What the gather adds to the shared cone settings (RenderSettings::cones).
 struct GatherSettings {
-    uint32_t coneSet = shader::CONE_SET_6;
-    float stepFactor = 0.5f;      // beta: step = beta * cone diameter
-    float minStepVoxels = 0.5f;   // floor of the step
-    float maxDistance = 0.0f;     // metres; 0 = the grid's diagonal
-    float firstSampleVoxels = 1.0f;
-    float normalOffsetVoxels = 2.5f;  // clears the 2-voxel directional cells' trilinear footprint
-    float clearance = shader::CONE_CLEARANCE_DEFAULT;  // K of traceConeAO (0 = plain diameter rule)
     float aoLambda = 0.5f;        // f(r) = 1 / (1 + lambda r), r in voxels
     bool specular = true;
     float minSpecularDegrees = 1.0f;  // half-angle of the narrowest specular cone, degrees
     float traceScale = 1.0f;      // trace resolution / internal resolution
 };
-
-shader::ConeParams coneParams(const GatherSettings& s, const vxgi::VoxelVolumes& volumes);
 
 class GatherPass {
 public:
@@ -40,6 +33,7 @@ public:
     // left in use::ComputeWrite.
     void record(VkCommandBuffer cmd, const GBufferPass& gbuffer, const vxgi::VoxelVolumes& volumes,
                 VkSampler volumeSampler, const gpu::Buffer& frame, const GatherSettings& settings,
+                const vxgi::ConeSettings& cone,
                 gpu::GpuTimers* timers) const;
     gpu::Image diffuse, specular;       // internal size, RGBA16F
     uint32_t traceWidth, traceHeight;

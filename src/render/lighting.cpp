@@ -9,6 +9,7 @@
 
 #include "render/shadows.h"
 #include "shared/bindings.h"
+#include "vxgi/cone_settings.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::render {
@@ -64,7 +65,7 @@ LightingPass::LightingPass(const gpu::Context& ctx, uint32_t width, uint32_t hei
 void LightingPass::record(VkCommandBuffer cmd, const GBufferPass& g, const ShadowPass& shadows,
                           const gpu::Buffer& frame, const gpu::Buffer& lights, const gpu::Buffer& views,
                           const vxgi::VoxelVolumes& volumes, VkSampler volumeSampler, const ShadowConeSettings& cones,
-                          gpu::GpuTimers* timers) const {
+                          const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "direct lighting");
     gpu::transition(cmd, direct, gpu::use::Undefined, gpu::use::ComputeWrite);
     gpu::transition(cmd, shadow, gpu::use::Undefined, gpu::use::ComputeWrite);
@@ -87,9 +88,9 @@ void LightingPass::record(VkCommandBuffer cmd, const GBufferPass& g, const Shado
         .sampledImages(sh::BIND_LIGHT_VOXEL_DIRECTIONAL, dirs, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(sh::BIND_LIGHT_OUT_SHADOW, shadow.view())
         .push(ctx_, cmd, pipeline_);
-    const LightingPush push{cones.cone, glm::vec4(cones.enabled ? 1.0f : 0.0f,
-                                                  std::tan(glm::radians(cones.apertureDegrees * 0.5f)),
-                                                  cones.normalOffsetVoxels, 0.0f)};
+    const LightingPush push{vxgi::gpuCone(cone, volumes.grid),
+                            glm::vec4(cones.enabled ? 1.0f : 0.0f, std::tan(glm::radians(cones.apertureDegrees * 0.5f)),
+                                      0.0f, 0.0f)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     vkCmdDispatch(cmd, gpu::groupCount(width_, 8), gpu::groupCount(height_, 8), 1);
 }

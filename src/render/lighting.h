@@ -5,6 +5,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "shared/voxel_data.h"
+#include "vxgi/cone_settings.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
@@ -20,11 +21,10 @@ class ShadowPass;
 
 // Shadow cones (paper Table V): a cone toward each light through the voxel
 // volumes instead of the shadow maps.
+// They march like the gather's cones (RenderSettings::cones).
 struct ShadowConeSettings {
     bool enabled = false;
     float apertureDegrees = 5.0f;  // full cone angle
-    float normalOffsetVoxels = 1.5f;
-    shader::ConeParams cone{glm::vec4(0.5f, 0.5f, 0.0f, 1.0f), glm::vec4(shader::CONE_CLEARANCE_DEFAULT, shader::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
 };
 
 class LightingPass {
@@ -33,7 +33,8 @@ public:
     // Leaves `direct` and `shadow` in use::ComputeWrite.
     void record(VkCommandBuffer cmd, const GBufferPass& gbuffer, const ShadowPass& shadows, const gpu::Buffer& frame,
                 const gpu::Buffer& lights, const gpu::Buffer& views, const vxgi::VoxelVolumes& volumes,
-                VkSampler volumeSampler, const ShadowConeSettings& cones, gpu::GpuTimers* timers) const;
+                VkSampler volumeSampler, const ShadowConeSettings& shadowCones, const vxgi::ConeSettings& cone,
+                gpu::GpuTimers* timers) const;
     gpu::Image direct;
     gpu::Image shadow;  // R16F: mean visibility of the lights facing each pixel
 

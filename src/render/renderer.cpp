@@ -177,7 +177,8 @@ void Renderer::updateFrameConstants() {
 }
 
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
-    bounce_->record(cmd, *volumes_, inject_->direct, settings_.voxelLight, withStats ? bounceStats_.get() : nullptr,
+    bounce_->record(cmd, *volumes_, inject_->direct,
+                    vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor), withStats ? bounceStats_.get() : nullptr,
                     timers_.get());
     aniso_->record(cmd, *volumes_, timers_.get(), "voxel filtering (bounce)");
 }
@@ -217,10 +218,10 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     }
     gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
     lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, *volumes_, volumeSampler_.handle(),
-                      settings_.shadowCones, t);
+                      settings_.shadowCones, settings_.cones, t);
     const bool traced = voxelizer_ != nullptr;
     if (traced) {
-        gather_->record(cmd, *gbuffer_, *volumes_, volumeSampler_.handle(), *frame_, settings_.gather, t);
+        gather_->record(cmd, *gbuffer_, *volumes_, volumeSampler_.handle(), *frame_, settings_.gather, settings_.cones, t);
     } else {
         gpu::transition(cmd, gather_->diffuse, gpu::use::Undefined, gpu::use::ComputeWrite);
         gpu::transition(cmd, gather_->specular, gpu::use::Undefined, gpu::use::ComputeWrite);

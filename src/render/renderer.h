@@ -42,6 +42,7 @@ struct RenderSettings {
     // Per-light occlusion mode for the voxel light pass, by light name
     // (lights not listed use shadow maps).
     std::vector<std::pair<std::string, vxgi::Occlusion>> lightOcclusion;
+    vxgi::ConeSettings cones;        // the gather's, the shadow cones' and (bounceCones) the bounce's
     GatherSettings gather;           // per-pixel cone tracing (needs voxels)
     ShadowConeSettings shadowCones;  // cones instead of shadow maps for direct light
     uint32_t outputTerm = 0;         // shader::TERM_* (full, direct, indirect, specular, ao, shadow)

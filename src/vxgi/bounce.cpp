@@ -45,7 +45,7 @@ uint32_t BouncePass::statsFloats(uint32_t n) {
 }
 
 void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::Image& direct,
-                        const VoxelLightSettings& settings, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
+                        const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
     std::array<VkImageView, 6> dirs;
@@ -59,9 +59,7 @@ void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::I
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .push(ctx_, cmd, pipeline_);
-    sh::BouncePush push{settings.bounceCone, glm::uvec4(stats ? 1u : 0u, 0u, 0u, 0u)};
-    // The default maximum distance is the grid's diagonal.
-    if (push.cone.trace.z > 1e29f) push.cone.trace.z = v.grid.voxelSize * float(v.grid.n) * 1.7320508f;
+    const sh::BouncePush push{gpuCone(cone, v.grid), glm::uvec4(stats ? 1u : 0u, 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     const uint32_t groups = gpu::groupCount(v.grid.n, sh::BOUNCE_GROUP);
     vkCmdDispatch(cmd, groups, groups, groups);

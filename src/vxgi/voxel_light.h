@@ -9,6 +9,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "shared/voxel_data.h"
+#include "vxgi/cone_settings.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
@@ -44,9 +45,10 @@ struct VoxelLightSettings {
     uint32_t bounces = 1;                 // Fixed: bounces per frame (0 = direct only)
     float convergence = 0.005f;           // Converge: stop when sum|dY| / sum Y over voxels is below this
     uint32_t maxBounces = 64;             // Converge: give up (and say so) after this many
-    // beta, min step, max distance, first sample; clearance and surface thickness
-    shader::ConeParams bounceCone{glm::vec4(1.0f, 0.5f, 1e30f, 1.0f),
-                                  glm::vec4(shader::CONE_CLEARANCE_DEFAULT, shader::CONE_SURFACE_VOXELS, 0.0f, 0.0f)};
+    // The bounce's cones march with the shared settings but this step factor
+    // (bounceCones()): beta = 1 costs half of 0.5 and changes the converged
+    // indirect light by 1.8 % (docs/quality.md).
+    float bounceStepFactor = 1.0f;
 };
 
 struct ShadowInputs {
@@ -88,7 +90,7 @@ public:
     // `stats` (optional, statsFloats(N) floats, host-visible): per-workgroup
     // sums of |luminance change| and luminance over occupied voxels.
     void record(VkCommandBuffer cmd, const VoxelVolumes& volumes, const gpu::Image& direct,
-                const VoxelLightSettings& settings, const gpu::Buffer* stats, gpu::GpuTimers* timers) const;
+                const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const;
     const gpu::Sampler& sampler() const { return sampler_; }
     static uint32_t statsFloats(uint32_t n);
 

@@ -56,7 +56,7 @@ TEST_F(ConeTracing, UniformlyEmissiveEnclosureGivesRhoL) {
         addClosedBox(s, addMaterial(s, glm::vec3(rho), glm::vec3(L)), 1.0f);
         addTopDownCamera(s, 0.5f, glm::radians(50.0f));  // inside, looking at the floor
         render::RenderSettings rs = settings(32, 32, sh::TERM_INDIRECT);
-        rs.gather.coneSet = cones;
+        rs.cones.coneSet = cones;
         const image::ImageRGBA32F img = render(s, rs);
         double sum = 0.0, maxErr = 0.0;
         for (uint32_t y = 4; y < 28; ++y)
@@ -98,7 +98,7 @@ TEST_F(ConeTracing, AmbientOcclusionIsOneOnAnOpenPlaneAndFallsTowardAWall) {
     render::RenderSettings rs = settings(32, 32, sh::TERM_AO);
     // Narrower cones reach less of their own surface: 0.89-0.92 with 16 cones.
     for (uint32_t cones : {sh::CONE_SET_6, sh::CONE_SET_16}) {
-        rs.gather.coneSet = cones;
+        rs.cones.coneSet = cones;
         const image::ImageRGBA32F open = render(s, rs);
         float lo = 1.0f, hi = 0.0f;
         for (uint32_t y = 2; y < 30; ++y)
@@ -110,7 +110,7 @@ TEST_F(ConeTracing, AmbientOcclusionIsOneOnAnOpenPlaneAndFallsTowardAWall) {
         EXPECT_GE(lo, 0.98f) << "cone set " << cones;
         EXPECT_LE(hi, 1.0f);
     }
-    rs.gather.coneSet = sh::CONE_SET_6;
+    rs.cones.coneSet = sh::CONE_SET_6;
 
     // A wall along the plane's x = 0.8 edge, facing -X.
     addQuad(s, white, glm::vec3(0.8f, 0.5f, 0.0f), 0.5f, glm::angleAxis(glm::half_pi<float>(), glm::vec3(0, 0, 1)));
@@ -147,8 +147,7 @@ TEST_F(ConeTracing, LoneLitPlaneGetsNoIndirectLight) {
         render::RenderSettings rs = settings(32, 32, sh::TERM_DIRECT);
         rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
         rs.voxelLight.bounces = 2;
-        rs.gather.clearance = clearance;
-        rs.voxelLight.bounceCone.surface.x = clearance;
+        rs.cones.clearance = clearance;
         const double direct = meanRed(render(s, rs));
         rs.outputTerm = sh::TERM_INDIRECT;
         const double indirect = meanRed(render(s, rs));

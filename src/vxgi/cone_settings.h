@@ -1,0 +1,33 @@
+// How a cone marches through the filtered voxel volumes: one description for
+// the per-pixel gather, the voxel bounce and the shadow cones, and its one GPU
+// form (shader::ConeParams) built in one place.
+#pragma once
+
+#include <cstdint>
+
+#include "shared/gather_data.h"
+#include "shared/voxel_data.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::vxgi {
+
+struct ConeSettings {
+    uint32_t coneSet = shader::CONE_SET_6;  // diffuse aperture set: the paper's 6 or 16 cones
+    float stepFactor = 0.5f;       // beta: step = beta * cone diameter
+    float minStepVoxels = 0.5f;    // floor of the step
+    float maxDistance = 0.0f;      // metres; 0 = the grid's diagonal
+    float offsetVoxels = 2.5f;     // origin lifted along the normal: clears the 2-voxel directional
+                                   // cells' trilinear footprint at a pixel
+    float firstSampleVoxels = 1.0f;
+    float clearance = shader::CONE_CLEARANCE_DEFAULT;  // K of traceConeAO (0 = plain diameter rule)
+};
+
+// The bounce traces N^3 voxels' cones, so it takes the shared settings with its
+// own step factor, the six-cone set, and an origin one voxel off the voxel (a
+// voxel's centre already lies on its surface, unlike a pixel's G-buffer point).
+ConeSettings bounceCones(const ConeSettings& shared, float bounceStepFactor);
+
+// The GPU form: the maximum distance resolved to metres on `grid`.
+shader::ConeParams gpuCone(const ConeSettings& c, const GridSpec& grid);
+
+}  // namespace dvsgi::vxgi
