@@ -29,6 +29,7 @@ public:
     void end(VkCommandBuffer cmd);  // closes the innermost open scope
     // Waits for the results of the last submitted frame. Same name twice: summed.
     std::vector<TimerResult> results() const;
+    uint32_t capacity() const { return maxScopes_; }
 
 private:
     const Context& ctx_;

@@ -309,6 +309,42 @@ FrameStats Renderer::renderFrame() {
     return stats;
 }
 
+bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
+    return a.width != b.width || a.height != b.height || a.supersample != b.supersample ||
+           a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels ||
+           a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
+           a.hardwareConservative != b.hardwareConservative || a.gather.traceScale != b.gather.traceScale ||
+           a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
+           (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
+}
+
+bool Renderer::applySettings(const RenderSettings& s) {
+    if (needsNewRenderer(settings_, s)) return false;
+    const vxgi::VoxelLightSettings& o = settings_.voxelLight;
+    const vxgi::VoxelLightSettings& n = s.voxelLight;
+    const vxgi::ConeSettings& oc = settings_.cones;
+    const vxgi::ConeSettings& nc = s.cones;
+    const bool light = o.normalWeighted != n.normalWeighted || o.occlusion != n.occlusion ||
+                       o.softKappa != n.softKappa || o.bounceMode != n.bounceMode || o.bounces != n.bounces ||
+                       o.convergence != n.convergence || o.maxBounces != n.maxBounces ||
+                       o.bounceStepFactor != n.bounceStepFactor || oc.stepFactor != nc.stepFactor ||
+                       oc.minStepVoxels != nc.minStepVoxels || oc.maxDistance != nc.maxDistance ||
+                       oc.firstSampleVoxels != nc.firstSampleVoxels || oc.clearance != nc.clearance ||
+                       s.shadows != settings_.shadows || s.normalOffsetTexels != settings_.normalOffsetTexels ||
+                       s.lightOcclusion != settings_.lightOcclusion;
+    const bool derived = settings_.voxelLight.emissionInRadiance;  // set by uploadLights from the scene
+    settings_ = s;
+    settings_.voxelLight.emissionInRadiance = derived;
+    const uint32_t scopes = 64 + 3 * std::max({n.maxBounces, n.bounces, 1u});
+    if (scopes > timers_->capacity()) timers_ = std::make_unique<gpu::GpuTimers>(ctx_, scopes);
+    if (light) {
+        uploadLights();
+        updateFrameConstants();
+        haveHistory_ = false;
+    }
+    return true;
+}
+
 const gpu::Image& Renderer::outputImage() const { return composite_->output; }
 
 image::ImageRGBA32F Renderer::readOutput() const {

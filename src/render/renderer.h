@@ -91,6 +91,13 @@ public:
 
     FrameStats renderFrame();                  // records, submits and waits
 
+    // Takes new settings from the next frame on when none of the changes needs
+    // new resources (needsNewRenderer); otherwise returns false and keeps the
+    // old ones, and the caller builds a new Renderer. A change to the voxel
+    // light makes BounceMode::Converge converge again.
+    bool applySettings(const RenderSettings& settings);
+    const RenderSettings& settings() const { return settings_; }
+
     // Scene changes: edit scene() (node transforms, ...) then call sceneChanged(),
     // or let setTime() apply the glTF animations. A static node that moved
     // makes the next frame re-run static voxelization.
@@ -166,6 +173,10 @@ public:
     };
     SurfaceImages readSurface() const;
 };
+
+// True when going from `a` to `b` changes an image, a buffer, a pipeline or
+// the grid (sizes, voxels, shadow map, trace scale, emitter patches, camera).
+bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b);
 
 // Camera matrices for an image of the given size (Vulkan clip space, Y flipped
 // so row 0 is the top of the image).

@@ -1,9 +1,12 @@
 // The Renderer notices moved static nodes and re-voxelizes them, and animates
 // dynamic nodes without touching static voxels.
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
+#include "scene/load.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
 
@@ -79,6 +82,41 @@ TEST_F(RendererUpdate, MovedStaticNodeIsReVoxelizedWithoutStaleVoxels) {
     // The floor's voxels are all still there.
     for (size_t i = 0; i < after.size(); ++i)
         if (floor[i] > 0.0f) ASSERT_GT(after[i], 0.0f) << "floor voxel lost at index " << i;
+}
+
+// A per-frame change applied to a running Renderer gives the image a new
+// Renderer with the same settings gives; a resource change is refused.
+TEST_F(RendererUpdate, AppliedSettingsMatchAFreshRenderer) {
+    const scene::Scene s = scene::builtinCornellBox();
+    render::RenderSettings a;
+    a.width = a.height = 16;
+    a.shadowMapSize = 256;
+    a.voxels = 32;
+    render::RenderSettings b = a;
+    b.cones.clearance = 1.0f;
+    b.voxelLight.softKappa = 0.25f;
+    b.applyAO = true;
+    b.shadowCones.enabled = true;
+
+    render::Renderer running(context(), s, a);
+    running.renderFrame();
+    ASSERT_TRUE(running.applySettings(b));
+    running.renderFrame();  // converges again: the voxel light changed
+    const image::ImageRGBA32F got = running.readOutput();
+    const image::ImageRGBA32F want = render(s, b);
+    double diff = 0.0, sum = 0.0;
+    for (size_t i = 0; i < want.rgba.size(); ++i) {
+        diff += std::abs(double(got.rgba[i]) - want.rgba[i]);
+        sum += std::abs(double(want.rgba[i]));
+    }
+    std::printf("  applied vs fresh: mean relative difference %.3g\n", diff / sum);
+    EXPECT_LT(diff / sum, 1e-5);
+
+    render::RenderSettings bigger = b;
+    bigger.voxels = 64;
+    EXPECT_FALSE(running.applySettings(bigger));
+    EXPECT_EQ(running.settings().voxels, 32u);
+    EXPECT_TRUE(render::needsNewRenderer(b, bigger));
 }
 
 }  // namespace
