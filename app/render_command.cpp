@@ -11,7 +11,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/load.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxelize.h"
 

@@ -8,8 +8,7 @@
 #include "gpu/check.h"
 #include "gpu/context.h"
 #include "gpu/resources.h"
-#include "shared/bindings.h"
-#include "shared/push.h"
+#include "shared/present_pass.h"
 
 namespace {
 const uint32_t kPresentComp[] = {
@@ -263,7 +262,7 @@ bool Swapchain::present(const gpu::Image& output, float exposureEV, const Overla
             .push(ctx_, cmd, toneMap_);
         const sh::PresentPush push{glm::vec4(float(src.width), float(src.height), std::exp2(exposureEV), 0.0f)};
         gpu::pushConstants(cmd, toneMap_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-        vkCmdDispatch(cmd, gpu::groupCount(src.width, 8), gpu::groupCount(src.height, 8), 1);
+        vkCmdDispatch(cmd, gpu::groupCount(src.width, shader::PRESENT_GROUP), gpu::groupCount(src.height, shader::PRESENT_GROUP), 1);
         gpu::transition(cmd, display_, gpu::use::ComputeWrite, gpu::use::TransferSrc);
         swapImageBarrier(cmd, target, gpu::use::Undefined, gpu::use::TransferDst);
         VkImageBlit blit{};

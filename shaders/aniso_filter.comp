@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "shared/voxel_data.h"
+#include "shared/aniso_filter_pass.h"
 
 // Anisotropic filtering (paper section VII). Each target voxel covers 2x2x2
 // source voxels. For each of the six travel directions, the four child columns
@@ -8,7 +8,7 @@
 // "front" = the child a ray travelling that way enters first) and averaged.
 // The base level reads the radiance volume for all six directions; each upper
 // level reads the same direction's previous level.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = ANISO_GROUP, local_size_y = ANISO_GROUP, local_size_z = ANISO_GROUP) in;
 
 layout(set = 0, binding = BIND_ANISO_SOURCE, rgba16f) uniform readonly image3D source;
 layout(set = 0, binding = BIND_ANISO_SOURCE_DIRS, rgba16f) uniform readonly image3D sourceDirs[6];

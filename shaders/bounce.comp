@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#include "shared/bounce_pass.h"
 #include "shared/voxel_data.h"
 
 // One bounce per occupied voxel (paper section IX): the irradiance from six
@@ -18,13 +19,12 @@ layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
 layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { float stats[]; };
 layout(push_constant) uniform Push { BouncePush pc; };
 
+#include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
 #include "lib/cone_trace.glsl"
 
 const uint GROUP_SIZE = BOUNCE_GROUP * BOUNCE_GROUP * BOUNCE_GROUP;
 shared vec2 partial[GROUP_SIZE];
-
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 vec4 bounced(ivec3 v) {
     vec4 d = imageLoad(direct, v);
@@ -43,7 +43,7 @@ vec4 bounced(ivec3 v) {
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
     vec3 E = gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
-    return vec4(d.rgb + voxelAlbedo(v) / 3.14159265 * E, d.a);
+    return vec4(d.rgb + voxelAlbedo(v) / PI * E, d.a);
 }
 
 void main() {

@@ -1,10 +1,11 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_data.h"
+#include "shared/voxelize_pass.h"
 
 // Zeroes every voxel that static geometry did not write, so dynamic geometry
 // can be voxelized afresh without touching static voxels.
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = CLEAR_GROUP, local_size_y = CLEAR_GROUP, local_size_z = CLEAR_GROUP) in;
 
 layout(set = 0, binding = BIND_CLEAR_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CLEAR_ACCUM, r32f) uniform writeonly image3D accum;

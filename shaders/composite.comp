@@ -1,14 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "shared/bindings.h"
-#include "shared/gather_data.h"
-#include "shared/push.h"
+#include "shared/composite_pass.h"
 
 // Final composition at output resolution: direct (with emission) + indirect
 // diffuse + specular, the indirect terms optionally times AO; or one term
 // alone (--output). With supersampling each output pixel is the box average of
 // its k x k internal pixels: a pixel-area average, as the references are.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = COMPOSITE_GROUP, local_size_y = COMPOSITE_GROUP) in;
 
 layout(set = 0, binding = BIND_COMP_DIRECT, rgba32f) uniform readonly image2D direct;
 layout(set = 0, binding = BIND_COMP_OUT, rgba32f) uniform writeonly image2D outImage;

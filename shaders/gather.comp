@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
-#include "shared/gather_data.h"
+#include "shared/gather_pass.h"
+#include "shared/voxel_data.h"
 
 // Deferred voxel cone tracing per pixel (paper section VIII-X): indirect
 // diffuse from a cone set over the normal hemisphere, specular from one cone
@@ -9,7 +10,7 @@
 // cones. Runs at the trace resolution (--trace-scale); the G-buffer is read at
 // the pixel each trace pixel stands for.
 #define CONE_USE_RADIANCE_VOLUME
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;
 
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceVolume;

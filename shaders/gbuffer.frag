@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
-#include "shared/bindings.h"
+#include "shared/geometry_pass.h"
 
 layout(set = 0, binding = BIND_GEOM_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];

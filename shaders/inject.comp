@@ -1,13 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
+#include "shared/inject_pass.h"
 #include "shared/voxel_data.h"
 
 // Direct light per occupied voxel (paper section VI), visible or not: Lambert
 // radiance rho/pi * E * attenuation * visibility for every light, plus the
 // voxel's emitted radiance. Writes RGBA16F radiance with alpha = opacity (1 for
 // occupied voxels).
-layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(local_size_x = INJECT_GROUP, local_size_y = INJECT_GROUP, local_size_z = INJECT_GROUP) in;
 
 layout(set = 0, binding = BIND_INJECT_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_INJECT_ACCUM, r32f) uniform readonly image3D accum;
@@ -17,12 +18,12 @@ layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow s
 layout(set = 0, binding = BIND_INJECT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
 layout(push_constant) uniform Push { VoxelLightPush pc; };
 
+#include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
 #include "lib/voxel_trace.glsl"
 
-const float PI = 3.14159265358979;
 
 void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID);

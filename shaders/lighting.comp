@@ -1,15 +1,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
-#include "shared/bindings.h"
-#include "shared/gather_data.h"
+#include "shared/lighting_pass.h"
+#include "shared/voxel_data.h"
 
 // Deferred direct lighting: for every pixel, the sum over lights of
 // BRDF * cos * irradiance * shadow visibility, plus emitted radiance. The
 // visibility comes from the shadow maps or, with shadow cones (paper Table V),
 // from a cone traced through the voxel volumes toward the light.
 #define CONE_USE_RADIANCE_VOLUME
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = LIGHTING_GROUP, local_size_y = LIGHTING_GROUP) in;
 
 layout(set = 0, binding = BIND_LIGHT_FRAME) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = BIND_LIGHT_GBUF_BASE) uniform sampler2D gBase;
@@ -25,10 +25,6 @@ layout(set = 0, binding = BIND_LIGHT_VOXEL_RADIANCE) uniform sampler3D radianceV
 layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directional[6];
 layout(set = 0, binding = BIND_LIGHT_OUT_SHADOW, r16f) uniform writeonly image2D outShadow;
 
-struct LightingPush {
-    ConeParams cone;  // the shared cone settings (gpuCone); trace.z = the longest cone (m)
-    vec4 shadow;      // x 1 = shadow cones instead of maps, y tan(half aperture)
-};
 layout(push_constant) uniform Push { LightingPush pc; };
 
 #include "lib/lights.glsl"

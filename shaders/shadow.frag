@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
-#include "shared/bindings.h"
+#include "shared/geometry_pass.h"
 
 // Depth-only; exists so cut-out (MASK) and stochastic (BLEND) surfaces cast
 // the shadows of the parts that exist.

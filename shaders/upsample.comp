@@ -1,15 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
-#include "shared/bindings.h"
-#include "shared/push.h"
+#include "shared/upsample_pass.h"
 
 // Depth- and normal-aware upsampling of the cone-traced terms from the trace
 // resolution to the internal resolution (the speed path of Wicked Engine's
 // VXGI): each full-resolution pixel blends its four nearest trace pixels with
 // bilinear weights times a depth and a normal similarity, so indirect light
 // does not bleed across silhouettes.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = UPSAMPLE_GROUP, local_size_y = UPSAMPLE_GROUP) in;
 
 layout(set = 0, binding = BIND_UP_FRAME) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = BIND_UP_NORMAL) uniform sampler2D gNormal;

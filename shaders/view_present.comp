@@ -1,11 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#include "shared/bindings.h"
-#include "shared/push.h"
+#include "shared/present_pass.h"
 // dvsgi view: the window's tone mapping, the PNG preview's (image/image_io.h,
 // writePng): radiance * 2^EV clamped to [0, 1], NaN -> 0, +Inf -> 1. The blit
 // into the sRGB swapchain image that follows applies the sRGB curve.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = PRESENT_GROUP, local_size_y = PRESENT_GROUP) in;
 
 layout(set = 0, binding = BIND_PRESENT_RADIANCE, rgba32f) uniform readonly image2D radiance;
 layout(set = 0, binding = BIND_PRESENT_DISPLAY, rgba32f) uniform writeonly image2D display;

@@ -2,11 +2,12 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
 #include "shared/voxel_data.h"
+#include "shared/voxel_view_pass.h"
 
 // Voxel debug view: marches each camera ray through the chosen grid (DDA,
 // Amanatides & Woo) and shows the first occupied voxel's value, so voxels
 // appear as cubes. Faces are shaded slightly by their axis to read the shapes.
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = VIEW_GROUP, local_size_y = VIEW_GROUP) in;
 
 layout(set = 0, binding = BIND_VIEW_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_VIEW_FRAME) uniform Frame { FrameConstants frame; };

@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_atomic_float : require
 #include "shared/scene_data.h"
-#include "shared/bindings.h"
+#include "shared/geometry_pass.h"
 #include "shared/voxel_data.h"
+#include "shared/voxelize_pass.h"
 
 layout(set = 0, binding = BIND_VOX_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_VOX_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_data.h"
+#include "shared/voxelize_pass.h"
 
 // Projects each triangle along its dominant axis onto an N x N viewport (one
 // pixel per voxel column) and, without hardware conservative rasterization,

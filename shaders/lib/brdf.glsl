@@ -1,7 +1,7 @@
 // Surface reflection: Lambert (baseColor / pi), plus a GGX lobe for glossy
 // materials. A material with roughness 1 and metallic 0 is treated as purely
 // Lambertian, which is the model of the path-traced references.
-const float PI = 3.14159265358979;
+#include "lib/math.glsl"
 
 bool isGlossy(float metallic, float roughness) {
     return metallic > 0.0 || roughness < 0.999;

@@ -18,12 +18,12 @@ vec3 gatherIrradiance16(vec3 origin, vec3 n, float originHeight, ConeParams para
         float r = sqrt(max(1.0 - z * z, 0.0));
         float phi = 2.39996323 * float(i);  // golden angle
         vec3 dir = normalize(z * n + r * (cos(phi) * t + sin(phi) * b));
-        float w = 3.14159265 * z / sumCos;
+        float w = PI * z / sumCos;
         float ao;
         vec4 c = traceConeAO(origin, n, originHeight, dir, TAN_CONE16, params, aoLambda, ao);
         E += w * c.rgb;
         occlusion += w * ao;
     }
-    occlusion /= 3.14159265;
+    occlusion /= PI;
     return E;
 }

@@ -3,6 +3,8 @@
 // (sampler3D, order -X +X -Y +Y -Z +Z); with CONE_USE_RADIANCE_VOLUME also
 // `radianceVolume` (sampler3D), blended in for cone diameters of 1-2 voxels.
 
+#include "lib/math.glsl"
+
 // Directional sample for a cone marching along unit `dir`: the three volumes
 // computed for rays travelling that way, weighted by dir^2 (sum 1). All six are
 // fetched and weighted (zero for the three facing away) so the sampling stays
@@ -115,18 +117,18 @@ vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams param
     coneBasis(n, t, b);
     const float sin60 = 0.8660254, cos60 = 0.5;
     // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
-    const float wCenter = 3.14159265 / 3.5, wSide = 3.14159265 * 0.5 / 3.5;
+    const float wCenter = PI / 3.5, wSide = PI * 0.5 / 3.5;
     float ao;
     vec4 c = traceConeAO(origin, n, originHeight, n, TAN_30, params, aoLambda, ao);
     vec3 E = wCenter * c.rgb;
     occlusion = wCenter * ao;
     for (int i = 0; i < 5; ++i) {
-        float phi = 6.28318531 * float(i) / 5.0;
+        float phi = TWO_PI * float(i) / 5.0;
         vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
         vec4 s = traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, ao);
         E += wSide * s.rgb;
         occlusion += wSide * ao;
     }
-    occlusion /= 3.14159265;
+    occlusion /= PI;
     return E;
 }

@@ -12,7 +12,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/load.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
 
 #ifndef DVSGI_VERSION
 #define DVSGI_VERSION "unknown"

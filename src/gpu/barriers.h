@@ -37,6 +37,18 @@ inline constexpr ImageUse DepthAttachment{VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIM
 inline constexpr ImageUse DepthRead{VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL,
                                     VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
                                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+// The voxel volumes live in GENERAL: compute reads (sampled or storage), the
+// voxelizer's fragment atomics, transfer clears and copies all use it.
+inline constexpr ImageUse ComputeRead{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                      VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+inline constexpr ImageUse VoxelizeReadWrite{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                                            VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+inline constexpr ImageUse ClearGeneral{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                       VK_ACCESS_2_TRANSFER_WRITE_BIT};
+inline constexpr ImageUse CopySrcGeneral{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                         VK_ACCESS_2_TRANSFER_READ_BIT};
+inline constexpr ImageUse CopyDstGeneral{VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_2_COPY_BIT,
+                                         VK_ACCESS_2_TRANSFER_WRITE_BIT};
 inline constexpr ImageUse TransferSrc{VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                                       VK_ACCESS_2_TRANSFER_READ_BIT};
 inline constexpr ImageUse TransferDst{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,

@@ -1,11 +1,9 @@
 #include "render/composite.h"
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "shared/bindings.h"
-#include "shared/gather_data.h"
-#include "shared/push.h"
+#include "shared/composite_pass.h"
 
 namespace dvsgi::render {
 
@@ -19,14 +17,7 @@ const uint32_t kComp[] = {
 
 }  // namespace
 
-CompositePass::CompositePass(const gpu::Context& ctx, uint32_t width, uint32_t height, uint32_t supersample)
-    : ctx_(ctx), width_(width), height_(height), supersample_(supersample) {
-    gpu::ImageDesc d;
-    d.format = VK_FORMAT_R32G32B32A32_SFLOAT;
-    d.extent = {width, height, 1};
-    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    d.name = "output";
-    output = gpu::Image(ctx, d);
+CompositePass::CompositePass(const gpu::Context& ctx) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -38,25 +29,28 @@ CompositePass::CompositePass(const gpu::Context& ctx, uint32_t width, uint32_t h
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "composite");
 }
 
-void CompositePass::record(VkCommandBuffer cmd, const gpu::Image& direct, const gpu::Image& shadow,
-                           const gpu::Image& diffuse, const gpu::Image& specular, bool indirect, uint32_t term,
-                           bool applyAO, gpu::GpuTimers* timers) const {
+void CompositePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const CompositeInputs& in,
+                           const gpu::Image& output, uint32_t supersample, uint32_t term, bool applyAO,
+                           gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "composite");
-    for (const gpu::Image* img : {&direct, &shadow, &diffuse, &specular})
-        gpu::transition(cmd, *img, gpu::use::ComputeWrite, gpu::use::ComputeReadWrite);
-    gpu::transition(cmd, output, gpu::use::Undefined, gpu::use::ComputeWrite);
+    tracker.image(in.direct, gpu::use::ComputeRead).image(in.visibility, gpu::use::ComputeRead);
+    if (in.indirect) tracker.image(in.diffuse, gpu::use::ComputeRead).image(in.specular, gpu::use::ComputeRead);
+    else  // bound but not read: any layout the descriptor accepts
+        tracker.image(in.diffuse, gpu::use::ComputeRead, true).image(in.specular, gpu::use::ComputeRead, true);
+    tracker.image(output, gpu::use::ComputeWrite, true).flush(cmd);
+    const uint32_t width = output.desc().extent.width, height = output.desc().extent.height;
     gpu::bind(cmd, pipeline_);
     gpu::Descriptors()
-        .storageImage(sh::BIND_COMP_DIRECT, direct.view())
+        .storageImage(sh::BIND_COMP_DIRECT, in.direct.view())
         .storageImage(sh::BIND_COMP_OUT, output.view())
-        .storageImage(sh::BIND_COMP_DIFFUSE, diffuse.view())
-        .storageImage(sh::BIND_COMP_SPECULAR, specular.view())
-        .storageImage(sh::BIND_COMP_SHADOW, shadow.view())
+        .storageImage(sh::BIND_COMP_DIFFUSE, in.diffuse.view())
+        .storageImage(sh::BIND_COMP_SPECULAR, in.specular.view())
+        .storageImage(sh::BIND_COMP_SHADOW, in.visibility.view())
         .push(ctx_, cmd, pipeline_);
-    const sh::CompositePush push{glm::uvec4(width_, height_, supersample_, term),
-                                 glm::uvec4(applyAO ? 1u : 0u, indirect ? 1u : 0u, 0u, 0u)};
+    const sh::CompositePush push{glm::uvec4(width, height, supersample, term),
+                                 glm::uvec4(applyAO ? 1u : 0u, in.indirect ? 1u : 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    vkCmdDispatch(cmd, gpu::groupCount(width_, 8), gpu::groupCount(height_, 8), 1);
+    vkCmdDispatch(cmd, gpu::groupCount(width, sh::COMPOSITE_GROUP), gpu::groupCount(height, sh::COMPOSITE_GROUP), 1);
 }
 
 }  // namespace dvsgi::render

@@ -7,23 +7,29 @@
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 
 namespace dvsgi::render {
 
+struct CompositeInputs {
+    const gpu::Image& direct;      // internal size (FrameTargets)
+    const gpu::Image& visibility;
+    const gpu::Image& diffuse;
+    const gpu::Image& specular;
+    bool indirect;  // false: no cone tracing ran, `diffuse` and `specular` are not read
+};
+
 class CompositePass {
 public:
-    CompositePass(const gpu::Context& ctx, uint32_t width, uint32_t height, uint32_t supersample);
-    // Inputs in use::ComputeWrite (internal size). `indirect` false: no cone
-    // tracing ran and `diffuse`/`specular` are not read. Leaves `output` in use::ComputeWrite.
-    void record(VkCommandBuffer cmd, const gpu::Image& direct, const gpu::Image& shadow, const gpu::Image& diffuse,
-                const gpu::Image& specular, bool indirect, uint32_t term, bool applyAO, gpu::GpuTimers* timers) const;
-    gpu::Image output;  // RGBA32F at output size
+    explicit CompositePass(const gpu::Context& ctx);
+    // Writes `output` whole, box-averaging supersample x supersample internal pixels.
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const CompositeInputs& in, const gpu::Image& output,
+                uint32_t supersample, uint32_t term, bool applyAO, gpu::GpuTimers* timers) const;
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
-    uint32_t width_, height_, supersample_;
 };
 
 }  // namespace dvsgi::render

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "shared/scene_data.h"
 #include "shared/voxel_data.h"
 
 namespace dvsgi::render {

@@ -4,12 +4,12 @@
 #include <array>
 #include <cmath>
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "render/gbuffer.h"
-#include "shared/bindings.h"
-#include "shared/push.h"
+#include "shared/gather_pass.h"
+#include "shared/upsample_pass.h"
+#include "shared/voxel_data.h"
 #include "shared/scene_data.h"
 #include "vxgi/volumes.h"
 
@@ -26,29 +26,9 @@ const uint32_t kUpsample[] = {
 #include "shaders/upsample.comp.inc"
 };
 
-gpu::Image termImage(const gpu::Context& ctx, uint32_t w, uint32_t h, const char* name) {
-    gpu::ImageDesc d;
-    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    d.extent = {w, h, 1};
-    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    d.name = name;
-    return gpu::Image(ctx, d);
-}
-
 }  // namespace
 
-GatherPass::GatherPass(const gpu::Context& ctx, uint32_t width, uint32_t height, float traceScale)
-    : traceWidth(std::max(1u, uint32_t(std::lround(width * traceScale)))),
-      traceHeight(std::max(1u, uint32_t(std::lround(height * traceScale)))),
-      ctx_(ctx),
-      width_(width),
-      height_(height) {
-    diffuse = termImage(ctx, width, height, "indirect diffuse");
-    specular = termImage(ctx, width, height, "specular");
-    if (traceWidth != width || traceHeight != height) {
-        lowDiffuse_ = termImage(ctx, traceWidth, traceHeight, "indirect diffuse (trace size)");
-        lowSpecular_ = termImage(ctx, traceWidth, traceHeight, "specular (trace size)");
-    }
+GatherPass::GatherPass(const gpu::Context& ctx) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -79,25 +59,32 @@ GatherPass::GatherPass(const gpu::Context& ctx, uint32_t width, uint32_t height,
     upsample_ = gpu::Pipeline(ctx, gpu::Spirv(kUpsample), up, "upsample");
 }
 
-void GatherPass::record(VkCommandBuffer cmd, const GBufferPass& g, const vxgi::VoxelVolumes& v, VkSampler volumeSampler,
-                        const gpu::Buffer& frame, const GatherSettings& s, const vxgi::ConeSettings& cone,
-                        gpu::GpuTimers* timers) const {
-    const bool reduced = bool(lowDiffuse_);
-    const gpu::Image& outD = reduced ? lowDiffuse_ : diffuse;
-    const gpu::Image& outS = reduced ? lowSpecular_ : specular;
+void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const GatherTargets& out,
+                        const GatherSettings& s, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const {
+    const bool reduced = out.traceDiffuse != nullptr;
+    const gpu::Image& outD = reduced ? *out.traceDiffuse : out.diffuse;
+    const gpu::Image& outS = reduced ? *out.traceSpecular : out.specular;
+    const GBuffer& g = in.gbuffer;
+    const vxgi::VoxelVolumes& v = in.volumes;
+    const uint32_t traceWidth = outD.desc().extent.width, traceHeight = outD.desc().extent.height;
+    const VkSampler point = in.samplers.point.handle();
     {
         gpu::GpuTimerScope timer(timers, cmd, "cone tracing");
-        gpu::transition(cmd, outD, gpu::use::Undefined, gpu::use::ComputeWrite);
-        gpu::transition(cmd, outS, gpu::use::Undefined, gpu::use::ComputeWrite);
+        tracker.image(g.base, gpu::use::ShaderRead)
+            .image(g.normal, gpu::use::ShaderRead)
+            .image(g.depth, gpu::use::DepthRead)
+            .image(v.radiance, gpu::use::ComputeRead);
+        for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
+        tracker.image(outD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
         std::array<VkImageView, 6> dirs;
         for (uint32_t d = 0; d < 6; ++d) dirs[d] = v.directional[d].view();
-        const VkSampler point = g.pointSampler.handle();
+        const VkSampler volumeSampler = in.samplers.volume.handle();
         gpu::bind(cmd, gather_);
         gpu::Descriptors()
             .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
             .sampledImage(sh::BIND_GATHER_RADIANCE, v.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .sampledImages(sh::BIND_CONE_DIRECTIONAL, dirs, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .uniformBuffer(sh::BIND_GATHER_FRAME, frame.handle())
+            .uniformBuffer(sh::BIND_GATHER_FRAME, in.frame.handle())
             .sampledImage(sh::BIND_GATHER_BASE, g.base.view(), point)
             .sampledImage(sh::BIND_GATHER_NORMAL, g.normal.view(), point)
             .sampledImage(sh::BIND_GATHER_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
@@ -109,28 +96,29 @@ void GatherPass::record(VkCommandBuffer cmd, const GBufferPass& g, const vxgi::V
         push.params = glm::vec4(0.0f, s.aoLambda, 0.0f, std::tan(glm::radians(s.minSpecularDegrees)));
         push.flags = glm::uvec4(0u, s.specular ? 1u : 0u, traceWidth, traceHeight);
         gpu::pushConstants(cmd, gather_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-        vkCmdDispatch(cmd, gpu::groupCount(traceWidth, 8), gpu::groupCount(traceHeight, 8), 1);
+        vkCmdDispatch(cmd, gpu::groupCount(traceWidth, sh::GATHER_GROUP), gpu::groupCount(traceHeight, sh::GATHER_GROUP), 1);
     }
     if (!reduced) return;
     gpu::GpuTimerScope timer(timers, cmd, "upsample");
-    gpu::transition(cmd, outD, gpu::use::ComputeWrite, gpu::use::ComputeReadWrite);
-    gpu::transition(cmd, outS, gpu::use::ComputeWrite, gpu::use::ComputeReadWrite);
-    gpu::transition(cmd, diffuse, gpu::use::Undefined, gpu::use::ComputeWrite);
-    gpu::transition(cmd, specular, gpu::use::Undefined, gpu::use::ComputeWrite);
-    const VkSampler point = g.pointSampler.handle();
+    const uint32_t width = out.diffuse.desc().extent.width, height = out.diffuse.desc().extent.height;
+    tracker.image(outD, gpu::use::ComputeRead)
+        .image(outS, gpu::use::ComputeRead)
+        .image(out.diffuse, gpu::use::ComputeWrite, true)
+        .image(out.specular, gpu::use::ComputeWrite, true)
+        .flush(cmd);
     gpu::bind(cmd, upsample_);
     gpu::Descriptors()
-        .uniformBuffer(sh::BIND_UP_FRAME, frame.handle())
+        .uniformBuffer(sh::BIND_UP_FRAME, in.frame.handle())
         .sampledImage(sh::BIND_UP_NORMAL, g.normal.view(), point)
         .sampledImage(sh::BIND_UP_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .storageImage(sh::BIND_UP_LOW_DIFFUSE, outD.view())
         .storageImage(sh::BIND_UP_LOW_SPECULAR, outS.view())
-        .storageImage(sh::BIND_UP_OUT_DIFFUSE, diffuse.view())
-        .storageImage(sh::BIND_UP_OUT_SPECULAR, specular.view())
+        .storageImage(sh::BIND_UP_OUT_DIFFUSE, out.diffuse.view())
+        .storageImage(sh::BIND_UP_OUT_SPECULAR, out.specular.view())
         .push(ctx_, cmd, upsample_);
-    const sh::UpsamplePush push{glm::uvec4(traceWidth, traceHeight, width_, height_)};
+    const sh::UpsamplePush push{glm::uvec4(traceWidth, traceHeight, width, height)};
     gpu::pushConstants(cmd, upsample_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    vkCmdDispatch(cmd, gpu::groupCount(width_, 8), gpu::groupCount(height_, 8), 1);
+    vkCmdDispatch(cmd, gpu::groupCount(width, sh::UPSAMPLE_GROUP), gpu::groupCount(height, sh::UPSAMPLE_GROUP), 1);
 }
 
 }  // namespace dvsgi::render

@@ -4,19 +4,18 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
-#include "shared/gather_data.h"
+#include "render/frame_resources.h"
 #include "vxgi/cone_settings.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 namespace dvsgi::vxgi {
 class VoxelVolumes;
 }
 
 namespace dvsgi::render {
-
-class GBufferPass;
 
 // What the gather adds to the shared cone settings (RenderSettings::cones).
 struct GatherSettings {
@@ -26,23 +25,32 @@ struct GatherSettings {
     float traceScale = 1.0f;      // trace resolution / internal resolution
 };
 
+struct GatherInputs {
+    const GBuffer& gbuffer;
+    const vxgi::VoxelVolumes& volumes;  // radiance and the filtered directional volumes
+    const Samplers& samplers;
+    const gpu::Buffer& frame;
+};
+
+// The cone-traced terms at internal size, and at trace size when the trace
+// runs at a lower resolution (then upsampled); FrameTargets holds them all.
+struct GatherTargets {
+    const gpu::Image& diffuse;
+    const gpu::Image& specular;
+    const gpu::Image* traceDiffuse = nullptr;   // null: trace at internal size
+    const gpu::Image* traceSpecular = nullptr;
+};
+
 class GatherPass {
 public:
-    GatherPass(const gpu::Context& ctx, uint32_t width, uint32_t height, float traceScale);
-    // Writes `diffuse`/`specular` at internal size (upsampled when traceScale < 1),
-    // left in use::ComputeWrite.
-    void record(VkCommandBuffer cmd, const GBufferPass& gbuffer, const vxgi::VoxelVolumes& volumes,
-                VkSampler volumeSampler, const gpu::Buffer& frame, const GatherSettings& settings,
-                const vxgi::ConeSettings& cone,
-                gpu::GpuTimers* timers) const;
-    gpu::Image diffuse, specular;       // internal size, RGBA16F
-    uint32_t traceWidth, traceHeight;
+    explicit GatherPass(const gpu::Context& ctx);
+    // Writes the targets whole (diffuse.a = ambient occlusion).
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const GatherTargets& out,
+                const GatherSettings& settings, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const;
 
 private:
     const gpu::Context& ctx_;
-    gpu::Image lowDiffuse_, lowSpecular_;  // trace size (only when traceScale < 1)
     gpu::Pipeline gather_, upsample_;
-    uint32_t width_, height_;
 };
 
 }  // namespace dvsgi::render

@@ -1,11 +1,10 @@
 #include "render/gbuffer.h"
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "render/scene_gpu.h"
-#include "shared/bindings.h"
-#include "shared/push.h"
+#include "shared/geometry_pass.h"
 
 namespace dvsgi::render {
 
@@ -20,36 +19,15 @@ const uint32_t kFrag[] = {
 #include "shaders/gbuffer.frag.inc"
 };
 
-gpu::Image target(const gpu::Context& ctx, VkFormat format, uint32_t w, uint32_t h, VkImageUsageFlags usage,
-                  const char* name) {
-    gpu::ImageDesc d;
-    d.format = format;
-    d.extent = {w, h, 1};
-    d.usage = usage | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    d.name = name;
-    return gpu::Image(ctx, d);
-}
-
 }  // namespace
 
-GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t width, uint32_t height)
-    : ctx_(ctx), width_(width), height_(height) {
-    const VkImageUsageFlags color = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
-    base = target(ctx, kColorFormat, width, height, color, "gbuffer base colour");
-    normal = target(ctx, kColorFormat, width, height, color, "gbuffer normal");
-    emission = target(ctx, kColorFormat, width, height, color, "gbuffer emission");
-    depth = target(ctx, kDepthFormat, width, height, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "gbuffer depth");
-    gpu::SamplerDesc sd;
-    sd.filter = VK_FILTER_NEAREST;
-    sd.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    pointSampler = gpu::Sampler(ctx, sd);
-
+GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ctx) {
+    constexpr VkFormat kColorFormat = GBuffer::kColorFormat;
     gpu::GraphicsDesc g;
     g.vertex = kVert;
     g.fragment = kFrag;
     g.colorFormats = {kColorFormat, kColorFormat, kColorFormat};
-    g.depthFormat = kDepthFormat;
+    g.depthFormat = GBuffer::kDepthFormat;
     gpu::LayoutDesc layout;
     const VkShaderStageFlags vs = VK_SHADER_STAGE_VERTEX_BIT, fs = VK_SHADER_STAGE_FRAGMENT_BIT;
     layout.bindings = {{sh::BIND_GEOM_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vs},
@@ -61,16 +39,13 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_
     pipeline_ = gpu::Pipeline(ctx, g, layout, "gbuffer");
 }
 
-uint64_t GBufferPass::memoryBytes() const {
-    return base.memorySize() + normal.memorySize() + emission.memorySize() + depth.memorySize();
-}
-
-void GBufferPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Buffer& frame,
-                         gpu::GpuTimers* timers) const {
+void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& frame,
+                         const GBuffer& out, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "gbuffer");
-    const gpu::Image* colors[3] = {&base, &normal, &emission};
-    for (const gpu::Image* c : colors) gpu::transition(cmd, *c, gpu::use::Undefined, gpu::use::ColorAttachment);
-    gpu::transition(cmd, depth, gpu::use::Undefined, gpu::use::DepthAttachment);
+    const gpu::Image* colors[3] = {&out.base, &out.normal, &out.emission};
+    for (const gpu::Image* c : colors) tracker.image(*c, gpu::use::ColorAttachment, true);
+    tracker.image(out.depth, gpu::use::DepthAttachment, true).flush(cmd);
+    const uint32_t width = out.depth.desc().extent.width, height = out.depth.desc().extent.height;
 
     VkRenderingAttachmentInfo colorInfo[3];
     for (int i = 0; i < 3; ++i) {
@@ -82,12 +57,12 @@ void GBufferPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::
         colorInfo[i].clearValue.color = {{0, 0, 0, 0}};
     }
     VkRenderingAttachmentInfo depthInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    depthInfo.imageView = depth.view();
+    depthInfo.imageView = out.depth.view();
     depthInfo.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
     depthInfo.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     depthInfo.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     depthInfo.clearValue.depthStencil = {1.0f, 0};
-    const VkRect2D area{{0, 0}, {width_, height_}};
+    const VkRect2D area{{0, 0}, {width, height}};
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
     ri.renderArea = area;
     ri.layerCount = 1;
@@ -103,7 +78,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::
         .storageBuffer(sh::BIND_GEOM_MATERIALS, scene.materials.handle())
         .push(ctx_, cmd, pipeline_);
     scene.bindGeometry(cmd, pipeline_.layout());
-    const VkViewport viewport{0, 0, float(width_), float(height_), 0, 1};
+    const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
     for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
@@ -113,9 +88,6 @@ void GBufferPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::
         vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
     }
     vkCmdEndRendering(cmd);
-
-    for (const gpu::Image* c : colors) gpu::transition(cmd, *c, gpu::use::ColorAttachment, gpu::use::ShaderRead);
-    gpu::transition(cmd, depth, gpu::use::DepthAttachment, gpu::use::DepthRead);
 }
 
 }  // namespace dvsgi::render

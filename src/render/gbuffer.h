@@ -4,9 +4,11 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "render/frame_resources.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 
 namespace dvsgi::render {
@@ -15,21 +17,14 @@ class SceneGpu;
 
 class GBufferPass {
 public:
-    static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-
-    GBufferPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t width, uint32_t height);
-    // Leaves every target in use::ShaderRead (depth in use::DepthRead).
-    void record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Buffer& frame, gpu::GpuTimers* timers) const;
-
-    gpu::Image base, normal, emission, depth;
-    gpu::Sampler pointSampler;
-    uint64_t memoryBytes() const;
+    GBufferPass(const gpu::Context& ctx, const SceneGpu& scene);
+    // Rasterizes the scene into `out` (FrameTargets::gbuffer), all of it.
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& frame,
+                const GBuffer& out, gpu::GpuTimers* timers) const;
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
-    uint32_t width_, height_;
 };
 
 }  // namespace dvsgi::render

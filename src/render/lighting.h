@@ -4,20 +4,18 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
-#include "shared/voxel_data.h"
+#include "render/frame_resources.h"
 #include "vxgi/cone_settings.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 namespace dvsgi::vxgi {
 class VoxelVolumes;
 }
 
 namespace dvsgi::render {
-
-class GBufferPass;
-class ShadowPass;
 
 // Shadow cones (paper Table V): a cone toward each light through the voxel
 // volumes instead of the shadow maps.
@@ -27,21 +25,27 @@ struct ShadowConeSettings {
     float apertureDegrees = 5.0f;  // full cone angle
 };
 
+struct LightingInputs {
+    const GBuffer& gbuffer;
+    const gpu::Image& shadowMap;
+    const Samplers& samplers;
+    const gpu::Buffer& frame;
+    const gpu::Buffer& lights;
+    const gpu::Buffer& views;
+    const vxgi::VoxelVolumes& volumes;  // radiance and directional (shadow cones, area-light visibility)
+};
+
 class LightingPass {
 public:
-    LightingPass(const gpu::Context& ctx, uint32_t width, uint32_t height);
-    // Leaves `direct` and `shadow` in use::ComputeWrite.
-    void record(VkCommandBuffer cmd, const GBufferPass& gbuffer, const ShadowPass& shadows, const gpu::Buffer& frame,
-                const gpu::Buffer& lights, const gpu::Buffer& views, const vxgi::VoxelVolumes& volumes,
-                VkSampler volumeSampler, const ShadowConeSettings& shadowCones, const vxgi::ConeSettings& cone,
+    explicit LightingPass(const gpu::Context& ctx);
+    // Writes `direct` and `visibility` (FrameTargets) whole.
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const LightingInputs& in, const gpu::Image& direct,
+                const gpu::Image& visibility, const ShadowConeSettings& shadowCones, const vxgi::ConeSettings& cone,
                 gpu::GpuTimers* timers) const;
-    gpu::Image direct;
-    gpu::Image shadow;  // R16F: mean visibility of the lights facing each pixel
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
-    uint32_t width_, height_;
 };
 
 }  // namespace dvsgi::render

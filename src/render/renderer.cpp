@@ -9,7 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/transfer.h"
 #include "render/composite.h"
@@ -18,8 +18,11 @@
 #include "render/lighting.h"
 #include "render/scene_gpu.h"
 #include "render/shadows.h"
+#include "shared/bounce_pass.h"
 #include "shared/scene_data.h"
-#include "vxgi/voxel_light.h"
+#include "vxgi/aniso_filter.h"
+#include "vxgi/bounce.h"
+#include "vxgi/inject.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::render {
@@ -72,20 +75,23 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),
                                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            gpu::MemoryUse::Device, "frame constants");
-    shadows_ = std::make_unique<ShadowPass>(ctx, *sceneGpu_, settings.shadowMapSize, viewCount_);
-    gbuffer_ = std::make_unique<GBufferPass>(ctx, *sceneGpu_, iw, ih);
-    lighting_ = std::make_unique<LightingPass>(ctx, iw, ih);
-    composite_ = std::make_unique<CompositePass>(ctx, settings.width, settings.height, settings.supersample);
+    FrameSize size;
+    size.width = settings.width;
+    size.height = settings.height;
+    size.supersample = settings.supersample;
+    size.traceScale = settings.gather.traceScale;
+    size.shadowMapSize = settings.shadowMapSize;
+    size.shadowViews = viewCount_;
+    targets_ = std::make_unique<FrameTargets>(createFrameTargets(ctx, size));
+    samplers_ = std::make_unique<Samplers>(createSamplers(ctx));
+    shadows_ = std::make_unique<ShadowPass>(ctx, *sceneGpu_);
+    gbuffer_ = std::make_unique<GBufferPass>(ctx, *sceneGpu_);
+    lighting_ = std::make_unique<LightingPass>(ctx);
+    composite_ = std::make_unique<CompositePass>(ctx);
     // Converging records three scopes per bounce (frame, bounce, filtering).
     const uint32_t bounceScopes = 3 * std::max({settings.voxelLight.maxBounces, settings.voxelLight.bounces, 1u});
     timers_ = std::make_unique<gpu::GpuTimers>(ctx, 64 + bounceScopes);
-    gather_ = std::make_unique<GatherPass>(ctx, iw, ih, settings.gather.traceScale);
-    // Outside the grid is empty: a transparent border, so coarse cells on the
-    // grid's edge fade into nothing instead of repeating themselves beyond it.
-    gpu::SamplerDesc vs;
-    vs.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    vs.transparentBorder = true;
-    volumeSampler_ = gpu::Sampler(ctx, vs);
+    gather_ = std::make_unique<GatherPass>(ctx);
     if (settings.voxels == 0) {
         // The lighting pass always binds voxel volumes; without voxels it gets
         // small empty ones that nothing writes.
@@ -98,10 +104,11 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid);
         voxelizer_ = std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
-        inject_ = std::make_unique<vxgi::InjectPass>(ctx, grid.n);
+        inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
     }
+    for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
     if (settings.voxels == 0 && settings.view.mode != ViewMode::Final)
         throw std::runtime_error("--view: the voxel views need voxels (--voxels 0 turns them off)");
     updateFrameConstants();
@@ -177,10 +184,11 @@ void Renderer::updateFrameConstants() {
 }
 
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
-    bounce_->record(cmd, *volumes_, inject_->direct,
-                    vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor), withStats ? bounceStats_.get() : nullptr,
-                    timers_.get());
-    aniso_->record(cmd, *volumes_, timers_.get(), "voxel filtering (bounce)");
+    gpu::GpuTimers* t = timers_.get();
+    const vxgi::ConeSettings cone = vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor);
+    bounce_->record(cmd, tracker_, *volumes_, samplers_->volume.handle(), cone,
+                    withStats ? bounceStats_.get() : nullptr, t);
+    aniso_->record(cmd, tracker_, *volumes_, t, "voxel filtering (bounce)");
 }
 
 // Voxelization, shadow maps and the voxel light up to (not including) the
@@ -189,45 +197,50 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     if (voxelizer_) {
         if (staticDirty_) {
-            voxelizer_->clearAll(cmd, *volumes_, t);
-            voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
+            voxelizer_->clearAll(cmd, tracker_, *volumes_, t);
+            voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
         }
-        voxelizer_->clearDynamic(cmd, *volumes_, t);
-        voxelizer_->voxelize(cmd, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
+        voxelizer_->clearDynamic(cmd, tracker_, *volumes_, t);
+        voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
     }
-    shadows_->record(cmd, *sceneGpu_, *views_, viewCount_, t);
+    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, targets_->shadowMap, t);
     if (!voxelizer_) return;
-    const vxgi::ShadowInputs shadows{lights_->handle(), lightCount_,         views_->handle(),
-                                     shadows_->map().view(), shadows_->sampler().handle(), settings_.shadows};
-    inject_->record(cmd, *volumes_, shadows, settings_.voxelLight, t);
+    const vxgi::ShadowInputs shadows{*lights_, lightCount_, *views_, targets_->shadowMap, samplers_->shadow.handle(),
+                                     settings_.shadows};
+    inject_->record(cmd, tracker_, *volumes_, shadows, settings_.voxelLight, t);
     if (feedbackFrame()) {
         // The directional volumes still hold the previous frame's filtered
         // radiance: one bounce from them adds one more bounce of light.
         recordBounce(cmd, false);
         return;
     }
-    inject_->copyToRadiance(cmd, *volumes_);
-    aniso_->record(cmd, *volumes_, t, "voxel filtering");
+    inject_->copyToRadiance(cmd, tracker_, *volumes_);
+    aniso_->record(cmd, tracker_, *volumes_, t, "voxel filtering");
 }
 
 void Renderer::recordImage(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
+    FrameTargets& f = *targets_;
     if (settings_.view.mode != ViewMode::Final) {
-        voxelView_->record(cmd, *volumes_, *frame_, composite_->output, settings_.view, t);
+        voxelView_->record(cmd, tracker_, *volumes_, *frame_, f.output, settings_.view, t);
         return;
     }
-    gbuffer_->record(cmd, *sceneGpu_, *frame_, t);
-    lighting_->record(cmd, *gbuffer_, *shadows_, *frame_, *lights_, *views_, *volumes_, volumeSampler_.handle(),
-                      settings_.shadowCones, settings_.cones, t);
-    const bool traced = voxelizer_ != nullptr;
-    if (traced) {
-        gather_->record(cmd, *gbuffer_, *volumes_, volumeSampler_.handle(), *frame_, settings_.gather, settings_.cones, t);
-    } else {
-        gpu::transition(cmd, gather_->diffuse, gpu::use::Undefined, gpu::use::ComputeWrite);
-        gpu::transition(cmd, gather_->specular, gpu::use::Undefined, gpu::use::ComputeWrite);
+    gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
+    const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_};
+    lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
+    if (voxelizer_) {
+        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_};
+        const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
+                                f.reducedTrace() ? &f.traceSpecular : nullptr};
+        gather_->record(cmd, tracker_, in, out, settings_.gather, settings_.cones, t);
     }
-    composite_->record(cmd, lighting_->direct, lighting_->shadow, gather_->diffuse, gather_->specular, traced,
-                       settings_.outputTerm, settings_.applyAO, t);
+    recordComposite(cmd, settings_.outputTerm, t);
+}
+
+void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const {
+    const FrameTargets& f = *targets_;
+    const CompositeInputs in{f.direct, f.visibility, f.diffuse, f.specular, voxelizer_ != nullptr};
+    composite_->record(cmd, tracker_, in, f.output, settings_.supersample, term, settings_.applyAO, timers);
 }
 
 bool Renderer::feedbackFrame() const {
@@ -345,10 +358,10 @@ bool Renderer::applySettings(const RenderSettings& s) {
     return true;
 }
 
-const gpu::Image& Renderer::outputImage() const { return composite_->output; }
+const gpu::Image& Renderer::outputImage() const { return targets_->output; }
 
 image::ImageRGBA32F Renderer::readOutput() const {
-    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx_, composite_->output, gpu::use::ComputeWrite);
+    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx_, targets_->output, gpu::use::ComputeWrite);
     image::ImageRGBA32F img;
     img.width = settings_.width;
     img.height = settings_.height;
@@ -363,17 +376,20 @@ std::vector<MemoryItem> Renderer::memory() const {
     std::vector<MemoryItem> items = {
         {"geometry buffers", sceneGpu_->vertices.size() + sceneGpu_->indices.size() + sceneGpu_->draws.size()},
         {"textures", textures},
-        {"shadow maps", shadows_->memoryBytes()},
-        {"g-buffer", gbuffer_->memoryBytes()},
-        {"direct radiance", lighting_->direct.memorySize() + lighting_->shadow.memorySize()},
-        {"cone-traced terms", gather_->diffuse.memorySize() + gather_->specular.memorySize()},
-        {"output", composite_->output.memorySize()},
+        {"shadow maps", targets_->shadowMap.memorySize()},
+        {"g-buffer", targets_->gbuffer.memoryBytes()},
+        {"direct radiance", targets_->direct.memorySize() + targets_->visibility.memorySize()},
+        {"cone-traced terms", targets_->diffuse.memorySize() + targets_->specular.memorySize() +
+                                  (targets_->reducedTrace() ? targets_->traceDiffuse.memorySize() +
+                                                                  targets_->traceSpecular.memorySize()
+                                                            : 0)},
+        {"output", targets_->output.memorySize()},
     };
     if (voxelizer_) {
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});
         items.push_back({"voxel static flags", volumes_->flags.memorySize()});
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
-        items.push_back({"voxel direct light", inject_->direct.memorySize()});
+        items.push_back({"voxel direct light", volumes_->direct.memorySize()});
         uint64_t directional = 0;
         for (const gpu::Image& d : volumes_->directional) directional += d.memorySize();
         items.push_back({"directional volumes", directional});
@@ -384,12 +400,8 @@ std::vector<MemoryItem> Renderer::memory() const {
 image::ImageRGBA32F Renderer::readTerm(uint32_t term) const {
     if (settings_.view.mode != ViewMode::Final)
         throw std::runtime_error("view: terms exist only for the final image, not the voxel views");
-    const bool traced = voxelizer_ != nullptr;
     auto composite = [&](uint32_t t) {
-        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-            composite_->record(cmd, lighting_->direct, lighting_->shadow, gather_->diffuse, gather_->specular, traced,
-                               t, settings_.applyAO, nullptr);
-        });
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordComposite(cmd, t, nullptr); });
     };
     composite(term);
     image::ImageRGBA32F img = readOutput();
@@ -436,8 +448,8 @@ Renderer::SurfaceImages Renderer::readSurface() const {
     const uint32_t k = settings_.supersample, w = settings_.width, h = settings_.height;
     const uint32_t iw = w * k, ih = h * k;
     SurfaceImages out;
-    out.albedo = boxAverage(halfTexels(gpu::readbackImage(ctx_, gbuffer_->base, gpu::use::ShaderRead)), w, h, k);
-    out.normal = boxAverage(halfTexels(gpu::readbackImage(ctx_, gbuffer_->normal, gpu::use::ShaderRead)), w, h, k);
+    out.albedo = boxAverage(halfTexels(gpu::readbackImage(ctx_, targets_->gbuffer.base, gpu::use::ShaderRead)), w, h, k);
+    out.normal = boxAverage(halfTexels(gpu::readbackImage(ctx_, targets_->gbuffer.normal, gpu::use::ShaderRead)), w, h, k);
     for (size_t p = 0; p < out.normal.pixelCount(); ++p) {
         float* n = out.normal.rgba.data() + 4 * p;
         const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
@@ -447,7 +459,7 @@ Renderer::SurfaceImages Renderer::readSurface() const {
 
     // Depth: D32 holds post-projection depth; undo the projection per sample
     // so the layer is metres along the view axis, which averages meaningfully.
-    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx_, gbuffer_->depth, gpu::use::DepthRead);
+    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx_, targets_->gbuffer.depth, gpu::use::DepthRead);
     const glm::mat4 invProj = glm::inverse(projectionMatrix(camera_, iw, ih));
     out.depth = image::ImageRGBA32F::blank(w, h);
     for (uint32_t y = 0; y < h; ++y)

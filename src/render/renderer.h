@@ -9,13 +9,15 @@
 #include <vector>
 
 #include "gpu/timers.h"
+#include "gpu/tracker.h"
 #include "image/image_io.h"
+#include "render/frame_resources.h"
 #include "render/gather.h"
 #include "render/lighting.h"
 #include "render/voxel_view.h"
 #include "scene/scene.h"
 #include "vxgi/volumes.h"
-#include "vxgi/voxel_light.h"
+#include "vxgi/voxel_light_settings.h"
 
 namespace dvsgi::gpu {
 class Context;
@@ -128,6 +130,7 @@ private:
     void recordVoxels(VkCommandBuffer cmd);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordImage(VkCommandBuffer cmd);
+    void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
 
@@ -139,6 +142,11 @@ private:
     uint32_t lightCount_ = 0, viewCount_ = 0, patchCount_ = 0;
     std::unique_ptr<SceneGpu> sceneGpu_;
     std::unique_ptr<gpu::Buffer> frame_, lights_, views_;
+    std::unique_ptr<FrameTargets> targets_;
+    std::unique_ptr<Samplers> samplers_;
+    // Every image's last use, across frames; mutable because reading terms
+    // back (const) re-runs the composite.
+    mutable gpu::Tracker tracker_;
     std::unique_ptr<ShadowPass> shadows_;
     std::unique_ptr<GBufferPass> gbuffer_;
     std::unique_ptr<LightingPass> lighting_;
@@ -150,7 +158,6 @@ private:
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
     std::unique_ptr<GatherPass> gather_;
-    gpu::Sampler volumeSampler_;  // trilinear + mips, clamped to the grid's edge
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance

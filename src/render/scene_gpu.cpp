@@ -6,7 +6,7 @@
 
 #include "gpu/context.h"
 #include "gpu/transfer.h"
-#include "shared/bindings.h"
+#include "shared/geometry_pass.h"
 #include "shared/scene_data.h"
 
 namespace dvsgi::render {

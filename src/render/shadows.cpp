@@ -5,12 +5,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "render/scene_gpu.h"
-#include "shared/bindings.h"
-#include "shared/push.h"
+#include "shared/geometry_pass.h"
+#include "shared/scene_data.h"
 
 namespace dvsgi::render {
 
@@ -79,22 +79,7 @@ LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scen
     return out;
 }
 
-ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t size, uint32_t viewCount)
-    : ctx_(ctx), size_(size) {
-    gpu::ImageDesc d;
-    d.format = VK_FORMAT_D32_SFLOAT;
-    d.extent = {size, size, 1};
-    d.layers = std::max(viewCount, 2u);  // always an array view, even for one light
-    d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    d.name = "shadow map array";
-    map_ = gpu::Image(ctx, d);
-
-    gpu::SamplerDesc sd;
-    sd.compare = true;
-    sd.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    sampler_ = gpu::Sampler(ctx, sd);
-
+ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ctx) {
     gpu::GraphicsDesc g;
     g.vertex = kShadowVert;
     g.depthFormat = VK_FORMAT_D32_SFLOAT;
@@ -112,10 +97,11 @@ ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t 
     alphaTested_ = gpu::Pipeline(ctx, g, layout, "shadow alpha-tested");
 }
 
-void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Buffer& views, uint32_t viewCount,
-                        gpu::GpuTimers* timers) const {
+void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
+                        uint32_t viewCount, const gpu::Image& map, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
-    gpu::transition(cmd, map_, gpu::use::Undefined, gpu::use::DepthAttachment);
+    tracker.image(map, gpu::use::DepthAttachment, true).flush(cmd);
+    const uint32_t size = map.desc().extent.width;
     // Both pipelines share one layout, so descriptors pushed once serve both.
     gpu::bind(cmd, opaque_);
     gpu::Descriptors()
@@ -124,14 +110,14 @@ void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::B
         .storageBuffer(sh::BIND_GEOM_SHADOW_VIEWS, views.handle())
         .push(ctx_, cmd, opaque_);
     scene.bindGeometry(cmd, opaque_.layout());
-    const VkViewport viewport{0, 0, float(size_), float(size_), 0, 1};
-    const VkRect2D scissor{{0, 0}, {size_, size_}};
+    const VkViewport viewport{0, 0, float(size), float(size), 0, 1};
+    const VkRect2D scissor{{0, 0}, {size, size}};
     // Slope-scaled bias handles grazing angles; the normal offset at lookup does the rest.
     vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
 
     for (uint32_t v = 0; v < viewCount; ++v) {
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        depth.imageView = map_.layerView(v);
+        depth.imageView = map.layerView(v);
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
         depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -155,7 +141,6 @@ void ShadowPass::record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::B
         }
         vkCmdEndRendering(cmd);
     }
-    gpu::transition(cmd, map_, gpu::use::DepthAttachment, gpu::use::ShaderRead);
 }
 
 }  // namespace dvsgi::render

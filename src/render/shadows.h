@@ -12,6 +12,7 @@
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 
 namespace dvsgi::render {
@@ -29,21 +30,15 @@ LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scen
 
 class ShadowPass {
 public:
-    ShadowPass(const gpu::Context& ctx, const SceneGpu& scene, uint32_t size, uint32_t viewCount);
-    // Renders every view; leaves the map in use::ShaderRead.
-    void record(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Buffer& views, uint32_t viewCount,
-                gpu::GpuTimers* timers) const;
-    const gpu::Image& map() const { return map_; }
-    const gpu::Sampler& sampler() const { return sampler_; }
-    uint64_t memoryBytes() const { return map_.memorySize(); }
+    ShadowPass(const gpu::Context& ctx, const SceneGpu& scene);
+    // Renders view v of `views` into layer v of `map` (FrameTargets::shadowMap).
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
+                uint32_t viewCount, const gpu::Image& map, gpu::GpuTimers* timers) const;
 
 private:
     const gpu::Context& ctx_;
-    gpu::Image map_;
-    gpu::Sampler sampler_;
     gpu::Pipeline opaque_;       // depth only: no fragment shader, so no fragment work
     gpu::Pipeline alphaTested_;  // discards where MASK/BLEND coverage says there is no surface
-    uint32_t size_;
 };
 
 }  // namespace dvsgi::render

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "shared/voxel_data.h"
+#include "shared/voxel_view_pass.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::render {
@@ -44,12 +44,13 @@ VoxelViewPass::VoxelViewPass(const gpu::Context& ctx) : ctx_(ctx) {
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxel view");
 }
 
-void VoxelViewPass::record(VkCommandBuffer cmd, const vxgi::VoxelVolumes& v, const gpu::Buffer& frame,
-                           const gpu::Image& output, const ViewSettings& view, gpu::GpuTimers* timers) const {
+void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxgi::VoxelVolumes& v,
+                           const gpu::Buffer& frame, const gpu::Image& output, const ViewSettings& view,
+                           gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel view");
-    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-    gpu::transition(cmd, output, gpu::use::Undefined, gpu::use::ComputeWrite);
+    tracker.image(v.accum, gpu::use::ComputeRead).image(v.radiance, gpu::use::ComputeRead);
+    for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
+    tracker.image(output, gpu::use::ComputeWrite, true).flush(cmd);
     const uint32_t mip = std::min(view.mip, v.directionalMips - 1);
     const uint32_t w = output.desc().extent.width, h = output.desc().extent.height;
     gpu::bind(cmd, pipeline_);
@@ -63,7 +64,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, const vxgi::VoxelVolumes& v, con
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelViewPush push{glm::uvec4(shaderMode(view.mode), mip, w, h)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    vkCmdDispatch(cmd, gpu::groupCount(w, 8), gpu::groupCount(h, 8), 1);
+    vkCmdDispatch(cmd, gpu::groupCount(w, sh::VIEW_GROUP), gpu::groupCount(h, sh::VIEW_GROUP), 1);
 }
 
 }  // namespace dvsgi::render

@@ -8,6 +8,7 @@
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 namespace dvsgi::vxgi {
 class VoxelVolumes;
@@ -27,8 +28,9 @@ class VoxelViewPass {
 public:
     explicit VoxelViewPass(const gpu::Context& ctx);
     // `output` is written whole and left in use::ComputeWrite.
-    void record(VkCommandBuffer cmd, const vxgi::VoxelVolumes& volumes, const gpu::Buffer& frame,
-                const gpu::Image& output, const ViewSettings& view, gpu::GpuTimers* timers) const;
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxgi::VoxelVolumes& volumes,
+                const gpu::Buffer& frame, const gpu::Image& output, const ViewSettings& view,
+                gpu::GpuTimers* timers) const;
 
 private:
     const gpu::Context& ctx_;

@@ -1,10 +1,12 @@
+#include "vxgi/aniso_filter.h"
+
 #include <algorithm>
 #include <array>
 
-#include "gpu/barriers.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "vxgi/voxel_light.h"
+#include "gpu/tracker.h"
+#include "shared/aniso_filter_pass.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::vxgi {
@@ -30,8 +32,8 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kAniso), layout, "anisotropic filtering");
 }
 
-void AnisoFilterPass::record(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::GpuTimers* timers,
-                             const char* timerName) const {
+void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                             gpu::GpuTimers* timers, const char* timerName) const {
     gpu::GpuTimerScope timer(timers, cmd, timerName);
     gpu::bind(cmd, pipeline_);
     for (uint32_t level = 0; level < v.directionalMips; ++level) {
@@ -42,8 +44,13 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::Gp
             source[d] = v.directional[d].mipView(level == 0 ? 0 : level - 1);
             target[d] = v.directional[d].mipView(level);
         }
-        gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                                  VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+        // Level 0 reads the radiance volume, every other level the one below it.
+        if (level == 0) tracker.image(v.radiance, gpu::use::ComputeRead);
+        for (const gpu::Image& d : v.directional) {
+            if (level > 0) tracker.imageMip(d, level - 1, gpu::use::ComputeRead);
+            tracker.imageMip(d, level, gpu::use::ComputeWrite, true);
+        }
+        tracker.flush(cmd);
         gpu::Descriptors()
             .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
             .storageImages(sh::BIND_ANISO_SOURCE_DIRS, source)
@@ -52,11 +59,9 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::Gp
         const uint32_t size = std::max((v.grid.n / 2) >> level, 1u);
         const sh::AnisoPush push{glm::uvec4(size, level == 0 ? 1u : 0u, 0u, 0u)};
         gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-        const uint32_t groups = gpu::groupCount(size, 4);
+        const uint32_t groups = gpu::groupCount(size, sh::ANISO_GROUP);
         vkCmdDispatch(cmd, groups, groups, groups);
     }
-    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                              VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT);
 }
 
 }  // namespace dvsgi::vxgi

@@ -1,9 +1,11 @@
+#include "vxgi/bounce.h"
+
 #include <array>
 
-#include "gpu/barriers.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "vxgi/voxel_light.h"
+#include "gpu/tracker.h"
+#include "shared/bounce_pass.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::vxgi {
@@ -19,11 +21,6 @@ const uint32_t kBounce[] = {
 }  // namespace
 
 BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
-    gpu::SamplerDesc sd;
-    // Outside the grid is empty (transparent border), as for the gather.
-    sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
-    sd.transparentBorder = true;
-    sampler_ = gpu::Sampler(ctx, sd);
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
     layout.bindings = {{sh::BIND_CONE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
@@ -35,7 +32,6 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
-    // Bound when no statistics are asked for (the binding must stay valid).
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
 }
 
@@ -44,18 +40,23 @@ uint32_t BouncePass::statsFloats(uint32_t n) {
     return uint32_t(groups * groups * groups * sh::BOUNCE_STATS_FLOATS);
 }
 
-void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::Image& direct,
+void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
                         const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
-    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
+    for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
+    // Read and written: the statistics compare each voxel with its value before.
+    tracker.image(v.radiance, gpu::use::ComputeReadWrite);
+    if (stats) tracker.buffer(*stats, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    tracker.flush(cmd);
     std::array<VkImageView, 6> dirs;
     for (uint32_t d = 0; d < 6; ++d) dirs[d] = v.directional[d].view();
     gpu::bind(cmd, pipeline_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
-        .sampledImages(sh::BIND_CONE_DIRECTIONAL, dirs, sampler_.handle(), VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImages(sh::BIND_CONE_DIRECTIONAL, dirs, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
-        .storageImage(sh::BIND_BOUNCE_DIRECT, direct.view())
+        .storageImage(sh::BIND_BOUNCE_DIRECT, v.direct.view())
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .push(ctx_, cmd, pipeline_);
@@ -63,8 +64,7 @@ void BouncePass::record(VkCommandBuffer cmd, const VoxelVolumes& v, const gpu::I
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     const uint32_t groups = gpu::groupCount(v.grid.n, sh::BOUNCE_GROUP);
     vkCmdDispatch(cmd, groups, groups, groups);
-    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
-    if (stats) gpu::computeWritesVisibleTo(cmd, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    if (stats) tracker.buffer(*stats, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT).flush(cmd);
 }
 
 }  // namespace dvsgi::vxgi

@@ -5,7 +5,6 @@
 
 #include <cstdint>
 
-#include "shared/gather_data.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
 

@@ -85,6 +85,10 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g)
     d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
     d.name = "voxel radiance";
     radiance = gpu::Image(ctx, d);
+    d.usage = storage;
+    d.name = "voxel direct light";
+    direct = gpu::Image(ctx, d);
+    d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
     d.extent = {g.n / 2, g.n / 2, g.n / 2};
     d.mipLevels = directionalMips;
     d.name = "directional volume";
@@ -96,15 +100,19 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g)
     // Everything starts zeroed and stays in GENERAL from here on.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         const VkClearColorValue zero{};
-        std::vector<const gpu::Image*> all = {&accum, &flags, &radiance};
-        for (const gpu::Image& v : directional) all.push_back(&v);
-        for (const gpu::Image* img : all) {
+        for (const gpu::Image* img : all()) {
             gpu::transition(cmd, *img, gpu::use::Undefined, gpu::use::TransferDst);
             const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
             vkCmdClearColorImage(cmd, img->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
             gpu::transition(cmd, *img, gpu::use::TransferDst, gpu::use::ComputeReadWrite);
         }
     });
+}
+
+std::vector<const gpu::Image*> VoxelVolumes::all() const {
+    std::vector<const gpu::Image*> images = {&accum, &flags, &direct, &radiance};
+    for (const gpu::Image& v : directional) images.push_back(&v);
+    return images;
 }
 
 }  // namespace dvsgi::vxgi

@@ -44,9 +44,13 @@ public:
     uint32_t directionalMips;
     gpu::Image accum;     // R32_SFLOAT, N x N x (VOXEL_CHANNELS * N): summed attributes
     gpu::Image flags;     // R8_UINT, N^3: VOXEL_FLAG_STATIC where static geometry wrote
+    gpu::Image direct;    // RGBA16F, N^3: direct light + emission, kept for the bounces
     gpu::Image radiance;  // RGBA16F, N^3: direct light + emission (+ bounces), a = opacity
     std::array<gpu::Image, 6> directional;  // RGBA16F, (N/2)^3 + mips; order -X +X -Y +Y -Z +Z
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid
+    // Every volume, for code that handles them all alike. They start zeroed,
+    // in gpu::use::ComputeReadWrite.
+    std::vector<const gpu::Image*> all() const;
 };
 
 }  // namespace dvsgi::vxgi

@@ -4,12 +4,11 @@
 #include <bit>
 #include <cmath>
 
-#include "gpu/barriers.h"
+#include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "render/scene_gpu.h"
-#include "shared/bindings.h"
-#include "shared/voxel_data.h"
+#include "shared/voxelize_pass.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::vxgi {
@@ -30,9 +29,6 @@ const uint32_t kFrag[] = {
 const uint32_t kClear[] = {
 #include "shaders/clear_dynamic.comp.inc"
 };
-
-constexpr VkPipelineStageFlags2 kVoxelStages =
-    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 
 }  // namespace
 
@@ -66,36 +62,35 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const render::SceneGpu& scene, boo
     clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
 }
 
-void Voxelizer::clearAll(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::GpuTimers* timers) const {
+void Voxelizer::clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                         gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "clear all voxels");
-    gpu::storageWritesVisible(cmd, kVoxelStages | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                              VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
+    tracker.image(v.accum, gpu::use::ClearGeneral).image(v.flags, gpu::use::ClearGeneral).flush(cmd);
     const VkClearColorValue zero{};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, v.accum.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
     vkCmdClearColorImage(cmd, v.flags.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kVoxelStages);
 }
 
-void Voxelizer::clearDynamic(VkCommandBuffer cmd, const VoxelVolumes& v, gpu::GpuTimers* timers) const {
+void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                             gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "clear dynamic voxels");
-    gpu::storageWritesVisible(cmd, kVoxelStages, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT);
+    tracker.image(v.accum, gpu::use::ComputeReadWrite).image(v.flags, gpu::use::ComputeReadWrite).flush(cmd);
     gpu::bind(cmd, clear_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_CLEAR_GRID, v.gridBuffer.handle())
         .storageImage(sh::BIND_CLEAR_ACCUM, v.accum.view())
         .storageImage(sh::BIND_CLEAR_FLAGS, v.flags.view())
         .push(ctx_, cmd, clear_);
-    const uint32_t groups = gpu::groupCount(v.grid.n, 4);
+    const uint32_t groups = gpu::groupCount(v.grid.n, sh::CLEAR_GROUP);
     vkCmdDispatch(cmd, groups, groups, groups);
-    gpu::storageWritesVisible(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, kVoxelStages);
 }
 
-void Voxelizer::voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, const VoxelVolumes& v,
-                         VoxelizeMode mode, gpu::GpuTimers* timers) const {
+void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const render::SceneGpu& scene,
+                         const VoxelVolumes& v, VoxelizeMode mode, gpu::GpuTimers* timers) const {
     const bool dynamic = mode == VoxelizeMode::Dynamic;
     gpu::GpuTimerScope timer(timers, cmd, dynamic ? "voxelize dynamic" : "voxelize static");
-    gpu::storageWritesVisible(cmd, kVoxelStages | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, kVoxelStages);
+    tracker.image(v.accum, gpu::use::VoxelizeReadWrite).image(v.flags, gpu::use::VoxelizeReadWrite).flush(cmd);
     const uint32_t n = v.grid.n;
     const VkRect2D area{{0, 0}, {n, n}};
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -131,7 +126,6 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, con
         vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
     }
     vkCmdEndRendering(cmd);
-    gpu::storageWritesVisible(cmd, kVoxelStages, kVoxelStages | VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT);
 }
 
 }  // namespace dvsgi::vxgi

@@ -6,6 +6,7 @@
 
 namespace dvsgi::gpu {
 class GpuTimers;
+class Tracker;
 }
 namespace dvsgi::render {
 class SceneGpu;
@@ -24,12 +25,14 @@ public:
     Voxelizer(const gpu::Context& ctx, const render::SceneGpu& scene, bool hardwareConservative);
 
     // Zeroes attributes and flags: the start of a static re-voxelization.
-    void clearAll(VkCommandBuffer cmd, const VoxelVolumes& volumes, gpu::GpuTimers* timers) const;
-    // Zeroes the voxels not flagged static.
-    void clearDynamic(VkCommandBuffer cmd, const VoxelVolumes& volumes, gpu::GpuTimers* timers) const;
-    // Voxelizes the static or the dynamic draws of the scene.
-    void voxelize(VkCommandBuffer cmd, const render::SceneGpu& scene, const VoxelVolumes& volumes, VoxelizeMode mode,
+    void clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                   gpu::GpuTimers* timers) const;
+    // Zeroes the voxels not flagged static.
+    void clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
+                      gpu::GpuTimers* timers) const;
+    // Voxelizes the static or the dynamic draws of the scene.
+    void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const render::SceneGpu& scene,
+                  const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
     bool hardwareConservative() const { return hardware_; }
 
 private:

@@ -4,7 +4,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "gpu_fixture.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
+#include "shared/voxel_data.h"
 
 namespace dvsgi::test {
 namespace {

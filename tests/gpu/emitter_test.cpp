@@ -8,7 +8,7 @@
 
 #include "gpu_fixture.h"
 #include "render/emitters.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
 
 namespace dvsgi::test {
 namespace {

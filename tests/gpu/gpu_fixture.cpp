@@ -104,4 +104,10 @@ glm::vec3 pixelOnPlane(const scene::Scene& s, const render::RenderSettings& sett
     return p0 + (p1 - p0) * t;
 }
 
+gpu::Tracker volumeTracker(const vxgi::VoxelVolumes& volumes) {
+    gpu::Tracker tracker;
+    for (const gpu::Image* v : volumes.all()) tracker.assume(*v, gpu::use::ComputeReadWrite);
+    return tracker;
+}
+
 }  // namespace dvsgi::test

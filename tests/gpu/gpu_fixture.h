@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu/context.h"
+#include "gpu/tracker.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
@@ -33,6 +34,10 @@ void addTopDownCamera(scene::Scene& s, float height, float yfov);
 void addLight(scene::Scene& s, scene::Light light, glm::vec3 position, glm::vec3 direction);
 
 image::ImageRGBA32F render(const scene::Scene& s, const render::RenderSettings& settings);
+
+// A tracker for passes run outside a Renderer: it knows the volumes' state
+// after construction (zeroed, gpu::use::ComputeReadWrite).
+gpu::Tracker volumeTracker(const vxgi::VoxelVolumes& volumes);
 
 // World point on the plane y = planeY seen through the centre of pixel (x, y).
 glm::vec3 pixelOnPlane(const scene::Scene& s, const render::RenderSettings& settings, uint32_t x, uint32_t y,

@@ -7,7 +7,7 @@
 #include "gpu/context.h"
 #include "gpu_fixture.h"
 #include "light_helpers.h"
-#include "vxgi/voxel_light.h"
+#include "vxgi/aniso_filter.h"
 
 namespace dvsgi::test {
 namespace {
@@ -71,7 +71,8 @@ Rgba16Volume randomRadiance(uint32_t n, uint32_t seed) {
 
 void filter(const vxgi::VoxelVolumes& volumes) {
     const vxgi::AnisoFilterPass pass(context());
-    context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, volumes, nullptr, "test filter"); });
+    gpu::Tracker tracker = volumeTracker(volumes);
+    context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, nullptr, "test filter"); });
 }
 
 // The GPU computes in fp32 from fp16 inputs and stores fp16, which on lavapipe

@@ -6,7 +6,7 @@
 
 #include "gpu_fixture.h"
 #include "light_helpers.h"
-#include "vxgi/voxel_light.h"
+#include "vxgi/voxel_light_settings.h"
 
 namespace dvsgi::test {
 namespace {

@@ -13,7 +13,7 @@
 #include "gpu_fixture.h"
 #include "light_helpers.h"
 #include "render/shadows.h"
-#include "vxgi/voxel_light.h"
+#include "vxgi/inject.h"
 
 namespace dvsgi::test {
 namespace {
@@ -266,13 +266,14 @@ Rgba16Volume inject(const vxgi::VoxelVolumes& volumes, const vxgi::InjectPass& p
     const gpu::Buffer views =
         gpu::createBuffer(ctx, &noView, sizeof(noView), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "test shadow views");
     const UnusedShadowMap shadow;
-    const vxgi::ShadowInputs inputs{lightBuffer.handle(), uint32_t(setup.lights.size()), views.handle(),
-                                    shadow.map.view(), shadow.sampler.handle(), false};
+    const vxgi::ShadowInputs inputs{lightBuffer, uint32_t(setup.lights.size()), views, shadow.map,
+                                    shadow.sampler.handle(), false};
     vxgi::VoxelLightSettings settings;
     settings.normalWeighted = normalWeighted;
     settings.occlusion = vxgi::Occlusion::None;
-    ctx.submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, volumes, inputs, settings, nullptr); });
-    return readRgba16(pass.direct);
+    gpu::Tracker tracker = volumeTracker(volumes);
+    ctx.submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, inputs, settings, nullptr); });
+    return readRgba16(volumes.direct);
 }
 
 struct Mismatches {
@@ -322,7 +323,7 @@ TEST_F(InjectDirect, NormalWeightedMatchesEq5) {
     const AccumVolume accum = toAccum(voxels);
     const vxgi::VoxelVolumes volumes(context(), grid());
     uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context(), kN);
+    const vxgi::InjectPass pass(context());
     for (const LightCase& lc : lightCases()) {
         const Rgba16Volume got = inject(volumes, pass, lc.lights, true);
         compare(got, accum, voxels, lc.lights, Attenuation::NormalWeightedChannels, false,
@@ -341,7 +342,7 @@ TEST_F(InjectDirect, LambertMatchesEq2) {
     const AccumVolume accum = toAccum(voxels);
     const vxgi::VoxelVolumes volumes(context(), grid());
     uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context(), kN);
+    const vxgi::InjectPass pass(context());
     for (const LightCase& lc : lightCases())
         compare(inject(volumes, pass, lc.lights, false), accum, voxels, lc.lights, Attenuation::Lambert, false,
                 lc.name + ", eq. 2");
@@ -360,7 +361,7 @@ TEST_F(InjectDirect, Eq5AndEq2AgreeOnlyForAxisAlignedNormals) {
     const AccumVolume accum = toAccum(voxels);
     const vxgi::VoxelVolumes volumes(context(), grid());
     uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context(), kN);
+    const vxgi::InjectPass pass(context());
     scene::PlacedLight light = sun();
     light.light.color = glm::vec3(1.0f);
     light.direction = glm::normalize(glm::vec3(-1.0f, -2.0f, 0.0f));

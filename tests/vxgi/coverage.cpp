@@ -55,9 +55,10 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
     for (size_t g = 0; g < grids.size(); ++g) {
         const vxgi::GridSpec& grid = grids[g];
         vxgi::VoxelVolumes volumes(context(), grid);
+        gpu::Tracker tracker = volumeTracker(volumes);
         context().submitAndWait([&](VkCommandBuffer cmd) {
-            voxelizer.clearAll(cmd, volumes, nullptr);
-            voxelizer.voxelize(cmd, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
+            voxelizer.clearAll(cmd, tracker, volumes, nullptr);
+            voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
         });
         const VoxelSet gpu = readVoxels(volumes).occupancy();
         const std::vector<Triangle> tris = voxelTriangles(s, grid);

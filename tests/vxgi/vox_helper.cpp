@@ -28,20 +28,20 @@ VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes) {
 }
 
 VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid)
-    : sceneGpu(context(), scene), voxelizer(context(), sceneGpu, false), volumes(context(), grid) {}
+    : sceneGpu(context(), scene), voxelizer(context(), sceneGpu, false), volumes(context(), grid), tracker(volumeTracker(volumes)) {}
 
 void VoxelRig::fullVoxelize() {
     context().submitAndWait([&](VkCommandBuffer cmd) {
-        voxelizer.clearAll(cmd, volumes, nullptr);
-        voxelizer.voxelize(cmd, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
-        voxelizer.voxelize(cmd, sceneGpu, volumes, vxgi::VoxelizeMode::Dynamic, nullptr);
+        voxelizer.clearAll(cmd, tracker, volumes, nullptr);
+        voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
+        voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Dynamic, nullptr);
     });
 }
 
 void VoxelRig::dynamicFrame() {
     context().submitAndWait([&](VkCommandBuffer cmd) {
-        voxelizer.clearDynamic(cmd, volumes, nullptr);
-        voxelizer.voxelize(cmd, sceneGpu, volumes, vxgi::VoxelizeMode::Dynamic, nullptr);
+        voxelizer.clearDynamic(cmd, tracker, volumes, nullptr);
+        voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Dynamic, nullptr);
     });
 }
 

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "gpu/tracker.h"
 #include "render/scene_gpu.h"
 #include "sat.h"
 #include "scene/scene.h"
@@ -43,6 +44,7 @@ struct VoxelRig {
     render::SceneGpu sceneGpu;
     vxgi::Voxelizer voxelizer;
     vxgi::VoxelVolumes volumes;
+    gpu::Tracker tracker;
 };
 
 // Voxelization from scratch of every draw (static and dynamic) into a fresh grid.

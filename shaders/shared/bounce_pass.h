@@ -1,0 +1,31 @@
+// The voxel bounce (vxgi/bounce.cpp, bounce.comp): bindings beside
+// lib/cone_trace.glsl's, push constants, workgroup size, statistics layout;
+// shared by C++ and GLSL.
+#ifndef DVSGI_SHARED_BOUNCE_PASS_H
+#define DVSGI_SHARED_BOUNCE_PASS_H
+
+#include "common.h"
+#include "voxel_data.h"
+
+DVSGI_BEGIN
+
+struct BouncePush {
+    ConeParams cone;
+    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS)
+};
+DVSGI_CHECK_SIZE(BouncePush, 48);
+
+// The bounce's workgroup edge, and what each workgroup writes when asked:
+// the sum over its occupied voxels of |luminance change| and of the new
+// luminance (two floats), so the host can tell when bounces have converged.
+DVSGI_CONST(uint, BOUNCE_GROUP, 4);
+DVSGI_CONST(uint, BOUNCE_STATS_FLOATS, 2);
+
+DVSGI_CONST(uint, BIND_BOUNCE_ACCUM, 3);
+DVSGI_CONST(uint, BIND_BOUNCE_DIRECT, 4);     // direct light + emission (storage, read)
+DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, read for the change, then written)
+DVSGI_CONST(uint, BIND_BOUNCE_STATS, 6);      // float[BOUNCE_STATS_FLOATS] per workgroup
+
+DVSGI_END
+
+#endif

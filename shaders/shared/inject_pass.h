@@ -1,0 +1,30 @@
+// Voxel direct light (vxgi/inject.cpp, inject.comp): bindings, push
+// constants and workgroup size; shared by C++ and GLSL.
+#ifndef DVSGI_SHARED_INJECT_PASS_H
+#define DVSGI_SHARED_INJECT_PASS_H
+
+#include "common.h"
+#include "voxel_data.h"
+
+DVSGI_BEGIN
+
+struct VoxelLightPush {
+    uvec4 flags;   // x light count, y 1 = normal-weighted attenuation (eq. 5), 0 = Lambert N.L (eq. 2),
+                   // z occlusion override (OCCLUSION_*), w shadows rendered (1/0)
+    vec4 params;   // x soft-shadow kappa, y shadow-map normal offset (texels), z 1 = add emission to the
+                   // radiance (0 when emitters are area lights)
+};
+DVSGI_CHECK_SIZE(VoxelLightPush, 32);
+
+DVSGI_CONST(uint, BIND_INJECT_GRID, 0);
+DVSGI_CONST(uint, BIND_INJECT_ACCUM, 1);
+DVSGI_CONST(uint, BIND_INJECT_LIGHTS, 2);
+DVSGI_CONST(uint, BIND_INJECT_SHADOW_VIEWS, 3);
+DVSGI_CONST(uint, BIND_INJECT_SHADOW_MAP, 4);
+DVSGI_CONST(uint, BIND_INJECT_RADIANCE, 5);
+
+DVSGI_CONST(uint, INJECT_GROUP, 4);  // 4^3 voxels per workgroup
+
+DVSGI_END
+
+#endif

@@ -1,0 +1,33 @@
+// Voxel debug view (render/voxel_view.cpp, voxel_view.comp); shared by C++
+// and GLSL.
+#ifndef DVSGI_SHARED_VOXEL_VIEW_PASS_H
+#define DVSGI_SHARED_VOXEL_VIEW_PASS_H
+
+#include "common.h"
+
+DVSGI_BEGIN
+
+// Voxel debug view (VoxelViewPush.mode.x).
+DVSGI_CONST(uint, VIEW_ALBEDO, 0);
+DVSGI_CONST(uint, VIEW_NORMAL, 1);
+DVSGI_CONST(uint, VIEW_EMISSION, 2);
+DVSGI_CONST(uint, VIEW_RADIANCE, 3);
+DVSGI_CONST(uint, VIEW_DIRECTIONAL, 4);
+
+struct VoxelViewPush {
+    uvec4 mode;  // x VIEW_*, y mip level (directional), z output width, w output height
+};
+DVSGI_CHECK_SIZE(VoxelViewPush, 16);
+
+DVSGI_CONST(uint, BIND_VIEW_GRID, 0);
+DVSGI_CONST(uint, BIND_VIEW_FRAME, 1);
+DVSGI_CONST(uint, BIND_VIEW_ACCUM, 2);
+DVSGI_CONST(uint, BIND_VIEW_RADIANCE, 3);
+DVSGI_CONST(uint, BIND_VIEW_DIRECTIONAL, 4);  // the chosen direction, the chosen mip
+DVSGI_CONST(uint, BIND_VIEW_OUT, 5);
+
+DVSGI_CONST(uint, VIEW_GROUP, 8);
+
+DVSGI_END
+
+#endif

@@ -1,0 +1,38 @@
+// Conservative voxelization and the dynamic-voxel clear (vxgi/voxelize.cpp,
+// voxelize.*, clear_dynamic.comp); shared by C++ and GLSL.
+#ifndef DVSGI_SHARED_VOXELIZE_PASS_H
+#define DVSGI_SHARED_VOXELIZE_PASS_H
+
+#include "common.h"
+
+DVSGI_BEGIN
+
+// Voxelization modes (VoxelizePush.mode.x).
+DVSGI_CONST(uint, VOXELIZE_STATIC, 0);   // writes and flags voxels
+DVSGI_CONST(uint, VOXELIZE_DYNAMIC, 1);  // skips voxels flagged static
+
+struct VoxelizePush {
+    uvec4 ids;   // x draw index
+    uvec4 mode;  // x VOXELIZE_STATIC/DYNAMIC, y 1 = dilate in the geometry shader,
+                 // z float bits of the dilation margin beyond half a pixel (two sub-pixel steps,
+                 //   so grown edges survive the rasterizer's vertex snapping)
+};
+DVSGI_CHECK_SIZE(VoxelizePush, 32);
+
+// Voxelization pass bindings (set 1 = texture table, as for other geometry passes).
+DVSGI_CONST(uint, BIND_VOX_GRID, 0);
+DVSGI_CONST(uint, BIND_VOX_DRAWS, 1);
+DVSGI_CONST(uint, BIND_VOX_MATERIALS, 2);
+DVSGI_CONST(uint, BIND_VOX_ACCUM, 3);
+DVSGI_CONST(uint, BIND_VOX_FLAGS, 4);
+
+// Dynamic-voxel clear.
+DVSGI_CONST(uint, BIND_CLEAR_GRID, 0);
+DVSGI_CONST(uint, BIND_CLEAR_ACCUM, 1);
+DVSGI_CONST(uint, BIND_CLEAR_FLAGS, 2);
+
+DVSGI_CONST(uint, CLEAR_GROUP, 4);  // 4^3 voxels per workgroup
+
+DVSGI_END
+
+#endif

@@ -1,0 +1,37 @@
+// The voxel bounce (paper section IX): cones per occupied voxel through the
+// filtered directional volumes; radiance = direct + albedo / pi x irradiance.
+// Repeated with filtering in between, or once per frame from the previous
+// frame's volumes (feedback), it adds one bounce of light each time.
+#pragma once
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "vxgi/cone_settings.h"
+
+namespace dvsgi::gpu {
+class GpuTimers;
+class Tracker;
+}
+
+namespace dvsgi::vxgi {
+
+class VoxelVolumes;
+
+class BouncePass {
+public:
+    explicit BouncePass(const gpu::Context& ctx);
+    // Reads the attributes, `direct` and the directional volumes (through
+    // `volumeSampler`), writes `radiance`. `stats` (optional, statsFloats(N)
+    // floats, host-visible) receives per-workgroup sums of |luminance change|
+    // and luminance over occupied voxels, readable by the host after the submission.
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, VkSampler volumeSampler,
+                const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const;
+    static uint32_t statsFloats(uint32_t n);
+
+private:
+    const gpu::Context& ctx_;
+    gpu::Pipeline pipeline_;
+    gpu::Buffer noStats_;  // bound when no statistics are asked for (the binding must stay valid)
+};
+
+}  // namespace dvsgi::vxgi

@@ -1,0 +1,42 @@
+// Voxel direct light (paper sections VI, VII): every occupied voxel's direct
+// light from each light (shadow maps, raycasts through the voxels, or none)
+// plus its emission, into VoxelVolumes::direct.
+#pragma once
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "vxgi/voxel_light_settings.h"
+
+namespace dvsgi::gpu {
+class GpuTimers;
+class Tracker;
+}
+
+namespace dvsgi::vxgi {
+
+class VoxelVolumes;
+
+struct ShadowInputs {
+    const gpu::Buffer& lights;
+    uint32_t lightCount;
+    const gpu::Buffer& views;
+    const gpu::Image& shadowMap;
+    VkSampler shadowSampler;
+    bool shadowsRendered;
+};
+
+class InjectPass {
+public:
+    explicit InjectPass(const gpu::Context& ctx);
+    // Reads the attributes, writes `direct` whole.
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, const ShadowInputs& shadows,
+                const VoxelLightSettings& settings, gpu::GpuTimers* timers) const;
+    // Copies `direct` into `radiance`: the start of the bounce iteration.
+    void copyToRadiance(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
+
+private:
+    const gpu::Context& ctx_;
+    gpu::Pipeline pipeline_;
+};
+
+}  // namespace dvsgi::vxgi

@@ -1,0 +1,43 @@
+// Settings of the voxel light passes (paper sections VI, VII, IX): how light
+// reaches the voxels (inject.h), and how the bounces are iterated (bounce.h).
+#pragma once
+
+#include <cstdint>
+
+#include "shared/voxel_data.h"
+
+namespace dvsgi::vxgi {
+
+enum class Occlusion : uint32_t {
+    ShadowMap = shader::OCCLUSION_SHADOW_MAP,
+    RaycastHard = shader::OCCLUSION_RAYCAST_HARD,
+    RaycastSoft = shader::OCCLUSION_RAYCAST_SOFT,
+    None = shader::OCCLUSION_NONE,
+    PerLight = shader::OCCLUSION_PER_LIGHT,
+};
+
+// How the voxel bounces are iterated.
+enum class BounceMode {
+    Fixed,     // exactly `bounces` bounces every frame (the paper: 1)
+    Converge,  // the first frame iterates until the relative change of voxel radiance
+               // falls below `convergence` (at most `maxBounces`), later frames feed back
+    Feedback,  // one bounce per frame reading the previous frame's filtered radiance
+};
+
+struct VoxelLightSettings {
+    bool normalWeighted = true;           // eq. 5 (else Lambert N.L, eq. 2)
+    Occlusion occlusion = Occlusion::PerLight;  // global override of each light's mode
+    float softKappa = 0.5f;               // soft raycast: nu += (1 - nu) * kappa / t
+    float shadowNormalOffset = 1.5f;      // texels
+    bool emissionInRadiance = true;       // false when emitters are lit as area lights (no double counting)
+    BounceMode bounceMode = BounceMode::Converge;
+    uint32_t bounces = 1;                 // Fixed: bounces per frame (0 = direct only)
+    float convergence = 0.005f;           // Converge: stop when sum|dY| / sum Y over voxels is below this
+    uint32_t maxBounces = 64;             // Converge: give up (and say so) after this many
+    // The bounce's cones march with the shared settings but this step factor
+    // (bounceCones()): beta = 1 costs half of 0.5 and changes the converged
+    // indirect light by 1.8 % (docs/quality.md).
+    float bounceStepFactor = 1.0f;
+};
+
+}  // namespace dvsgi::vxgi
