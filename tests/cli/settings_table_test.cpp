@@ -28,7 +28,7 @@ uint32_t maskOf(const std::string& command) {
 
 }  // namespace
 
-TEST(SettingsTable, NamesUniqueHelpAndGroupsPresent) {
+TEST(CliSettingsTable, NamesUniqueHelpAndGroupsPresent) {
     std::set<std::string> names, groups;
     for (const SettingGroup& g : settingGroups()) groups.insert(g.name);
     for (const Setting& s : settingsTable()) {
@@ -50,7 +50,7 @@ TEST(SettingsTable, NamesUniqueHelpAndGroupsPresent) {
     EXPECT_GT(names.size(), 50u);
 }
 
-TEST(SettingsTable, EveryDefaultIsInsideItsRange) {
+TEST(CliSettingsTable, EveryDefaultIsInsideItsRange) {
     const RenderOptions defaults;
     for (const Setting& s : settingsTable()) {
         if (!s.unset.empty()) continue;  // a documented "not set" value
@@ -79,7 +79,7 @@ TEST(SettingsTable, EveryDefaultIsInsideItsRange) {
     }
 }
 
-TEST(SettingsTable, EveryExampleParsesToAnotherValue) {
+TEST(CliSettingsTable, EveryExampleParsesToAnotherValue) {
     const RenderOptions defaults;
     for (const Setting& s : settingsTable()) {
         RenderOptions o;
@@ -101,7 +101,7 @@ TEST(SettingsTable, EveryExampleParsesToAnotherValue) {
 
 // What the table says about a change (next frame or new renderer) is what
 // the renderer does with it.
-TEST(SettingsTable, ApplyColumnAgreesWithTheRenderer) {
+TEST(CliSettingsTable, ApplyColumnAgreesWithTheRenderer) {
     const RenderOptions defaults;
     int checked = 0;
     for (const Setting& s : settingsTable()) {
@@ -114,7 +114,7 @@ TEST(SettingsTable, ApplyColumnAgreesWithTheRenderer) {
     EXPECT_GT(checked, 30);
 }
 
-TEST(SettingsTable, CommandLineSetsTheLibraryStructs) {
+TEST(CliSettingsTable, CommandLineSetsTheLibraryStructs) {
     const ParseResult r = parse({"render", "--cone-step", "1.5", "--cone-offset=1", "--bounce-step", "0.25",
                                  "--bounces", "3", "--voxel-box", "-1,-2,-3,1,2,3", "--light-occlusion", "sun=soft",
                                  "--light-occlusion", "lamp=none", "--shadows", "cone", "--shadow-aperture", "10",
@@ -149,7 +149,7 @@ TEST(SettingsTable, CommandLineSetsTheLibraryStructs) {
               vxgi::BounceMode::Converge);
 }
 
-TEST(SettingsTable, DefaultsAreTheLibrarysOwn) {
+TEST(CliSettingsTable, DefaultsAreTheLibrarysOwn) {
     const ParseResult r = parse({"render"});
     ASSERT_TRUE(r.error.empty()) << r.error;
     RenderOptions library;
@@ -168,7 +168,7 @@ std::string flatHelp() {
     return flat;
 }
 
-TEST(SettingsTable, HelpNamesEveryFlagWithItsRangeAndDefault) {
+TEST(CliSettingsTable, HelpNamesEveryFlagWithItsRangeAndDefault) {
     const std::string help = flatHelp();
     const RenderOptions defaults;
     // Each entry's text runs to the next entry's heading (the table's order is --help's).
@@ -195,7 +195,7 @@ TEST(SettingsTable, HelpNamesEveryFlagWithItsRangeAndDefault) {
     for (const SettingGroup& g : settingGroups()) EXPECT_NE(help.find(" " + g.name + ": "), std::string::npos);
 }
 
-TEST(SettingsTable, JsonRecordsEverySettingOfTheCommand) {
+TEST(CliSettingsTable, JsonRecordsEverySettingOfTheCommand) {
     ParseResult r = parse({"bench", "--width", "64", "--bench-voxels", "32,64", "--bounces", "2"});
     ASSERT_TRUE(r.error.empty()) << r.error;
     const nlohmann::json j = settingsJson(r.render, kBench);
@@ -212,7 +212,7 @@ TEST(SettingsTable, JsonRecordsEverySettingOfTheCommand) {
     EXPECT_EQ(settingsJson(RenderOptions{}, kRender)["out"], "out/render.exr");
 }
 
-TEST(SettingsTable, LibraryMessagesGetFlags) {
+TEST(CliSettingsTable, LibraryMessagesGetFlags) {
     EXPECT_EQ(withFlagNames("voxels: 1024^3 needs 3D images"), "--voxels: 1024^3 needs 3D images");
     EXPECT_EQ(withFlagNames("camera: 7 is out of range"), "--camera: 7 is out of range");
     EXPECT_EQ(withFlagNames("light-occlusion: no light named 'x'"), "--light-occlusion: no light named 'x'");
@@ -220,7 +220,7 @@ TEST(SettingsTable, LibraryMessagesGetFlags) {
     EXPECT_EQ(withFlagNames("no Vulkan device"), "no Vulkan device");
 }
 
-TEST(SettingsTable, OptionsOfAnotherCommandAreRefused) {
+TEST(CliSettingsTable, OptionsOfAnotherCommandAreRefused) {
     EXPECT_EQ(parse({"render", "--bench-out", "b.json"}).error,
               "--bench-out: an option of dvsgi bench, not of dvsgi render (see dvsgi --help)");
     EXPECT_EQ(parse({"bench", "--vsync", "off"}).error,
