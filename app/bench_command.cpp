@@ -8,7 +8,6 @@
 #include <fstream>
 #include <functional>
 #include <map>
-#include <string_view>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +18,7 @@
 #include "render/renderer.h"
 #include "render_command.h"
 #include "scene/load.h"
+#include "settings_table.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::app {
@@ -83,29 +83,6 @@ struct Measurement {
     uint64_t memoryBytes = 0;
     nlohmann::json detail;  // grid, memory items, setup times
 };
-
-bool givenOnCommandLine(int argc, const char* const* argv, std::string_view option) {
-    // Values never start with "--" (the parser rejects that), so a plain scan
-    // up to "--" finds exactly the options that were given.
-    for (int i = 2; i < argc; ++i) {
-        const std::string_view a = argv[i] ? argv[i] : "";
-        if (a == "--") break;
-        if (a == option || (a.starts_with(option) && a.size() > option.size() && a[option.size()] == '='))
-            return true;
-    }
-    return false;
-}
-
-std::string commandLine(int argc, const char* const* argv) {
-    std::string s;
-    for (int i = 0; i < argc; ++i) {
-        if (i) s += ' ';
-        const std::string a = argv[i] ? argv[i] : "";
-        const bool plain = !a.empty() && a.find_first_of(" \t\"'\\$`") == std::string::npos;
-        s += plain ? a : "'" + a + "'";
-    }
-    return s;
-}
 
 std::string utcNow() {
     const std::time_t t = std::time(nullptr);
@@ -188,9 +165,8 @@ double msSince(Clock::time_point start) {
 // failure (e.g. out of device memory); the caller records it.
 void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o, uint32_t warmup,
              uint32_t frames, double maxSeconds, Measurement& m, std::vector<std::string>& seenWarnings) {
-    render::RenderSettings rs = settingsForOptions(o);
-    const auto setupStart = Clock::now();
-    render::Renderer renderer(ctx, scene, rs);
+        const auto setupStart = Clock::now();
+    render::Renderer renderer(ctx, scene, o.settings);
     const double setupMs = msSince(setupStart);
     for (const std::string& w : renderer.warnings())
         if (std::find(seenWarnings.begin(), seenWarnings.end(), w) == seenWarnings.end()) {
@@ -370,21 +346,19 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 
 }  // namespace
 
-int runBench(const RenderOptions& options, int argc, const char* const* argv) {
+int runBench(const RenderOptions& options) {
     RenderOptions o = options;
-    const bool widthGiven = givenOnCommandLine(argc, argv, "--width");
-    const bool heightGiven = givenOnCommandLine(argc, argv, "--height");
-    if (!widthGiven) o.width = 640;
-    if (!heightGiven) o.height = 360;
-    std::vector<uint32_t> resolutions = o.benchVoxels;
-    uint32_t frames = o.benchFrames, warmup = o.benchWarmup;
+    if (!o.isGiven("width")) o.settings.width = 640;
+    if (!o.isGiven("height")) o.settings.height = 360;
     if (o.benchQuick) {
-        resolutions = {32};
-        frames = 2;
-        warmup = 1;
-        o.width = 160;
-        o.height = 90;
+        o.benchVoxels = {32};
+        o.benchFrames = 2;
+        o.benchWarmup = 1;
+        o.settings.width = 160;
+        o.settings.height = 90;
     }
+    const std::vector<uint32_t>& resolutions = o.benchVoxels;
+    const uint32_t frames = o.benchFrames, warmup = o.benchWarmup;
 
     const fs::path shared(o.sharedDir);
     const fs::path scenes = shared / "scenes";
@@ -413,32 +387,20 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
     nlohmann::json out;
     out["tool"] = "dvsgi bench";
     out["date"] = utcNow();
-    out["command_line"] = commandLine(argc, argv);
+    out["command_line"] = o.commandLine;
     out["device"] = deviceJson(ctx);
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     out["host"] = {{"cpu", hostCpu()},
                    {"hardware_threads", std::thread::hardware_concurrency()},
                    {"LP_NUM_THREADS", lpThreads ? lpThreads : ""}};
-    out["settings"] = {{"width", o.width},
-                       {"height", o.height},
-                       {"supersample", o.supersample},
-                       {"shadow_map_size", o.shadowMapSize},
-                       {"camera", o.camera},
-                       {"voxel_resolutions", resolutions},
-                       {"frames", frames},
-                       {"warmup_frames", warmup},
-                       {"max_seconds", o.benchMaxSeconds},
-                       {"time_step", o.timeStep},
-                       {"static_voxelization", "forced every measured frame (markStaticDirty)"},
-                       {"tables", o.benchTables},
-                       {"renderer", parametersJson(o)},
-                       {"shared", o.sharedDir},
-                       {"dynamic_model", dynamicModel.empty() ? nlohmann::json(nullptr) : nlohmann::json(dynamicModel)},
-                       {"quick", o.benchQuick},
-                       {"validation", o.validate}};
+    // Every setting the bench takes, as it ran (the bench's own image size and
+    // --bench-quick applied), and what the bench adds.
+    out["settings"] = settingsJson(o, kBench);
+    out["dynamic_model"] = dynamicModel.empty() ? nlohmann::json(nullptr) : nlohmann::json(dynamicModel);
+    out["static_voxelization"] = "forced every measured frame (markStaticDirty)";
 
     std::fprintf(stderr, "dvsgi bench: %s, %ux%u, %u warm-up + %u measured frame(s) per measurement\n",
-                 ctx.deviceName.c_str(), o.width, o.height, warmup, frames);
+                 ctx.deviceName.c_str(), o.settings.width, o.settings.height, warmup, frames);
 
     std::vector<Measurement> results;
     auto writeResults = [&] {
@@ -456,11 +418,11 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
     };
     std::vector<Variant> variants = {{"", [](RenderOptions&) {}}};
     if (o.benchTables) {
-        variants.push_back({"raycast occlusion", [](RenderOptions& r) { r.voxelOcclusion = "raycast"; }});
+        variants.push_back({"raycast occlusion", [](RenderOptions& r) { r.settings.voxelLight.occlusion = vxgi::Occlusion::RaycastHard; }});
         for (float a : {1.0f, 5.0f, 10.0f, 25.0f})
             variants.push_back({"shadow cone " + std::to_string(int(a)) + " deg", [a](RenderOptions& r) {
-                                    r.shadows = "cone";
-                                    r.shadowAperture = a;
+                                    r.settings.shadowCones.enabled = true;
+                                    r.settings.shadowCones.apertureDegrees = a;
                                 }});
     }
     const size_t total = suite.size() * resolutions.size() * variants.size();
@@ -510,7 +472,7 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
             std::fprintf(stderr, "[%zu/%zu] %s %u^3 ...\n", index, total, label.c_str(), n);
             std::fflush(stderr);
             RenderOptions mo = o;
-            mo.voxels = n;
+            mo.settings.voxels = n;
             variant.apply(mo);
             m.staticTriangles = staticTris;
             m.dynamicTriangles = dynamicTris;
@@ -544,8 +506,8 @@ int runBench(const RenderOptions& options, int argc, const char* const* argv) {
     writeResults();
 
     if (!o.quiet) {
-        printTable(results, "dvsgi bench, " + ctx.deviceName + ", " + std::to_string(o.width) + "x" +
-                                std::to_string(o.height) + ", " + out["date"].get<std::string>());
+        printTable(results, "dvsgi bench, " + ctx.deviceName + ", " + std::to_string(o.settings.width) + "x" +
+                                std::to_string(o.settings.height) + ", " + out["date"].get<std::string>());
         std::printf("\nwrote %s\n", o.benchOut.c_str());
     }
     if (ctx.validationErrors() > 0) {

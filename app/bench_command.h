@@ -9,10 +9,9 @@
 
 namespace dvsgi::app {
 
-// argv is the full command line: it is recorded in the JSON, and tells whether
-// --width/--height were given (otherwise the bench uses 640x360).
+// Without --width/--height (RenderOptions::given) the images are 640x360.
 // Returns the process exit code: 0 when at least one measurement succeeded,
 // 1 when none did, 3 when the validation layer reported errors.
-int runBench(const RenderOptions& options, int argc, const char* const* argv);
+int runBench(const RenderOptions& options);
 
 }  // namespace dvsgi::app

@@ -1,8 +1,11 @@
-// The --help text (app/options.h declares usageText). Kept apart from the
-// parser so each file reads on its own.
+// The --help text, generated from the settings table: one section per group,
+// each option with its value syntax, help, range and unit, default, and the
+// commands that take it when not all do.
 #include <string>
+#include <vector>
 
 #include "options.h"
+#include "settings_table.h"
 
 #ifndef DVSGI_VERSION
 #define DVSGI_VERSION "unknown"
@@ -10,158 +13,107 @@
 
 namespace dvsgi::app {
 
+namespace {
+
+constexpr size_t kWidth = 100;   // wrap column
+constexpr size_t kIndent = 25;   // where the help of every option starts
+
+// Appends `text` word-wrapped at kWidth, continuation lines indented by `indent`;
+// `column` is where the current line already is.
+void wrap(std::string& out, const std::string& text, size_t indent, size_t column) {
+    size_t pos = 0;
+    bool first = true;
+    while (pos < text.size()) {
+        size_t end = text.find(' ', pos);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(pos, end - pos);
+        if (!first && column + 1 + word.size() > kWidth) {
+            out += "\n" + std::string(indent, ' ');
+            column = indent;
+        } else if (!first) {
+            out += ' ';
+            ++column;
+        }
+        out += word;
+        column += word.size();
+        first = false;
+        pos = end + 1;
+    }
+    out += "\n";
+}
+
+std::string details(const Setting& s) {
+    const RenderOptions defaults;
+    std::vector<std::string> parts;
+    const std::string range = s.range();
+    const bool listed = s.metavar.find('|') != std::string::npos;  // "on|off" says it already
+    if (!range.empty() && (s.kind == Kind::Integer || s.kind == Kind::Number))
+        parts.push_back(range + (s.unit.empty() || s.unit == "EV" ? "" : " " + s.unit));
+    else if (!range.empty() && !listed)
+        parts.push_back("one of " + range);
+    else if (!s.unit.empty())
+        parts.push_back(s.unit);
+    if (!s.unset.empty())
+        parts.push_back("default: " + s.unset);
+    else if (s.kind == Kind::Flag)
+        parts.push_back("default off");
+    else
+        parts.push_back("default " + s.text(defaults));
+    if (s.repeatable) parts.push_back("repeatable");
+    if (s.commands != kAll) {
+        std::string who;
+        for (uint32_t c : {kRender, kView, kBench})
+            if (s.commands & c)
+                who += std::string(who.empty() ? "" : ", ") + (c == kRender ? "render" : c == kView ? "view" : "bench");
+        parts.push_back(who + " only");
+    }
+    if (s.apply == Apply::NextFrame) parts.push_back("viewer: next frame");
+    std::string d;
+    for (const std::string& p : parts) d += (d.empty() ? "" : "; ") + p;
+    return d;
+}
+
+}  // namespace
+
 std::string usageText() {
-    return "dvsgi " DVSGI_VERSION
-           " - voxel global illumination renderer (Vulkan)\n"
-           "\n"
-           "Usage:\n"
-           "  dvsgi render [SCENE] [options]   render one frame to an EXR (and a PNG preview)\n"
-           "  dvsgi view   [SCENE] [options]   interactive window (same options)\n"
-           "  dvsgi bench  [SCENE] [options]   time the frame passes (same options)\n"
-           "  dvsgi help | --help | -h         this text\n"
-           "  dvsgi --version                  print the version\n"
-           "\n"
-           "SCENE is a glTF 2.0 (.gltf/.glb), OBJ (+MTL) or PLY file; without one the built-in\n"
-           "Cornell box is used.\n"
-           "Options take their value as '--opt VALUE' or '--opt=VALUE'; '--' ends the options.\n"
-           "\n"
-           "Options:\n"
-           "  --out FILE.exr       output frame (default out/render.exr). OpenEXR, float32 R,G,B:\n"
-           "                       linear radiance in W.m^-2.sr^-1 averaged over each pixel's area;\n"
-           "                       no exposure, tone mapping or gamma. Missing directories are created.\n"
-           "  --exr-type float|half  sample type of --out and --aov (default float; half keeps\n"
-           "                       11 significant bits, values above 65504 become infinite)\n"
-           "  --aov FILE.exr       also write one multi-layer EXR of the frame's terms at the\n"
-           "                       output size: direct, indirect, specular (R,G,B radiance),\n"
-           "                       ao (Y), albedo (R,G,B base colour), normal (X,Y,Z world),\n"
-           "                       depth (Z, metres along the view axis; inf = no geometry);\n"
-           "                       a '#' run is replaced by the frame number as in --out\n"
-           "  --png FILE.png|none  8-bit sRGB preview (default: the --out name with .png);\n"
-           "                       'none' writes no preview\n"
-           "  --width N            image width in pixels, 1..16384 (default 512)\n"
-           "  --height N           image height in pixels, 1..16384 (default 512)\n"
-           "  --camera N           index among the scene's camera nodes, >= 0 (default 0 = first)\n"
-           "  --exposure EV        exposure in stops applied to the PNG preview only:\n"
-           "                       preview = sRGB(clamp(radiance * 2^EV, 0, 1)); -20..20 (default 0).\n"
-           "                       The EXR is never scaled.\n"
-           "  --metrics FILE.json  write timings and frame statistics as JSON (default: none)\n"
-           "  --allow-outside-references  let a scene name buffers, images, MTL files or textures\n"
-           "                       outside its own folder (refused by default)\n"
-           "  --device NAME        use the first Vulkan device whose name contains NAME\n"
-           "                       (default: the best available device)\n"
-           "  --validate           enable the Khronos validation layer (default off)\n"
-           "  --shadow-map N       shadow map resolution in texels per side, a power of two\n"
-           "                       in 256..8192 (default 2048)\n"
-           "  --supersample K      render at K*width x K*height and box-average each KxK block,\n"
-           "                       giving pixel-area averages; 1..8 (default 1 = no supersampling)\n"
-           "  --quiet              do not print the timing table on stdout (default: print it)\n"
-           "\n"
-           "Voxels:\n"
-           "  --voxels N           voxel grid of N^3, N a power of two in 32..512 (default 128);\n"
-           "                       0 = no voxel passes. The grid is a cube on the scene's bounds\n"
-           "  --voxel-box X0,Y0,Z0,X1,Y1,Z1  put the grid on this box (metres) instead\n"
-           "  --conservative auto|gs  conservative rasterization for voxelization: hardware\n"
-           "                       (VK_EXT_conservative_rasterization) when the device has it,\n"
-           "                       else geometry-shader dilation (default auto); gs = always dilate\n"
-           "  --view MODE          final (default) or voxels:albedo|normal|emission|radiance|directional:\n"
-           "                       draw that voxel volume as cubes from the camera instead\n"
-           "  --view-mip M         mip level for voxels:directional (default 0)\n"
-           "  --view-direction D   -x +x -y +y -z +z: which directional volume (default -x)\n"
-           "\n"
-           "Voxel light:\n"
-           "  --bounces auto|K     voxel bounces by cone tracing. auto (default): a single render\n"
-           "                       repeats the bounce until the voxel radiance changes by less\n"
-           "                       than --bounce-convergence (all bounces, converged); later frames\n"
-           "                       (--frames, dvsgi view) add one bounce per frame from the previous\n"
-           "                       frame's light (feedback). K: exactly K bounces every frame, 0..64\n"
-           "                       (the paper: 1; 0 = direct light only)\n"
-           "  --bounce-convergence C  converging stops when the light still missing, estimated\n"
-           "                       from how the change sum|dY|/sum Y of voxel luminance shrinks per\n"
-           "                       bounce, is below C (default 0.005), or when the change is down\n"
-           "                       to the RGBA16F rounding noise (5e-4)\n"
-           "  --max-bounces M      converging stops after M bounces even if not converged, and\n"
-           "                       says so (default 64)\n"
-           "  --emitters lights|cones  emissive surfaces lit as area lights (default lights: their\n"
-           "                       triangles become --emitter-patches patches, evaluated at voxels\n"
-           "                       and pixels with voxel visibility) or only gathered by the cones\n"
-           "                       (the paper; small emitters are under-sampled). Emissive textures\n"
-           "                       always use the cones\n"
-           "  --emitter-patches N  area-light patches for all emitters, 1..1024 (default 64)\n"
-           "  --normal-weighted on|off  normal-weighted attenuation (paper eq. 5, default on)\n"
-           "                       or plain Lambert N.L with the averaged normal (eq. 2)\n"
-           "  --voxel-occlusion M  occlusion of lights at voxels for all lights: shadowmap,\n"
-           "                       raycast (hard), soft (raycast, nu += (1-nu) kappa / t), none;\n"
-           "                       default per-light (each light's own mode, shadowmap unless set)\n"
-           "  --light-occlusion NAME=M  the mode of one light (repeatable)\n"
-           "  --soft-kappa K       kappa of soft raycast shadows, t in voxels (default 0.5)\n"
-           "\n"
-           "Cone tracing and composition:\n"
-           "  --cones 6|16         diffuse cone set: the paper's six 60-degree cones (default)\n"
-           "                       or sixteen equal-solid-angle cones; cosine-weighted and\n"
-           "                       normalized so a uniform radiance L gives irradiance pi*L\n"
-           "  --cone-step B        step = B * cone diameter (beta, default 0.5)\n"
-           "  --cone-min-step S    smallest step in voxels (default 0.5)\n"
-           "  --max-distance M     longest cone in metres (default 0 = the grid's diagonal)\n"
-           "  --cone-offset V      cone origins move V voxels along the normal (default 2.5)\n"
-           "  --cone-clearance K   near a surface, sample mip cells no larger than (height\n"
-           "                       over it - 1 voxel) / K, so a cone does not read the surface\n"
-           "                       it leaves (default 3; 0 = the paper's plain diameter rule)\n"
-           "  --specular on|off    one cone along the reflected view direction for glossy\n"
-           "                       materials, tan(half-angle) = roughness^2 (default on)\n"
-           "  --ao-lambda L        ambient occlusion falloff f(r) = 1/(1 + L r), r in voxels\n"
-           "                       (default 0.5)\n"
-           "  --ao on|off          multiply the indirect terms by the AO (default off: the\n"
-           "                       cones already account for occlusion)\n"
-           "  --shadows map|cone   direct-light visibility from shadow maps (default) or from\n"
-           "                       a cone toward each light (paper Table V)\n"
-           "  --shadow-aperture D  full angle of the shadow cones in degrees (default 5)\n"
-           "  --trace-scale S      trace cones at S x the resolution and upsample with depth\n"
-           "                       and normal weights (0.125..1, default 1)\n"
-           "  --output T           full (default), direct, indirect, specular, ao or shadow:\n"
-           "                       write one term of the composition\n"
-           "\n"
-           "Animation and dynamic objects:\n"
-           "  --frames K           render K frames of the glTF animations, K*time-step seconds,\n"
-           "                       and write the last; a '#' run in --out (e.g. f_###.exr)\n"
-           "                       writes every frame with its number (default 1)\n"
-           "  --time-step S        seconds between frames (default 1/30)\n"
-           "  --dynamic NAME       mark the node NAME dynamic (repeatable); animated nodes are\n"
-           "                       dynamic already. Dynamic geometry is re-voxelized every frame\n"
-           "  --add-model FILE     add FILE (any supported format) as a dynamic object moving on\n"
-           "                       a circle through the scene, one turn per 120 frames\n"
-           "  --add-model-size M   its largest extent in metres (default: 1/5 of the scene)\n"
-           "  --help, -h           this text\n"
-           "\n"
-           "Viewer (dvsgi view; needs a display):\n"
-           "  Keys: WASD move, Q/E down/up, right mouse drag looks, scroll changes the speed,\n"
-           "  1-9 pick a scene camera, V toggles vsync, P takes a screenshot, Esc closes;\n"
-           "  arrows and PageUp/PageDown move a light or dynamic object (Tab picks which).\n"
-           "  The window shows the frame as the PNG preview encodes it (--exposure applies).\n"
-           "  --vsync on|off       FIFO presentation (default on) or the fastest mode available\n"
-           "  --view-frames K      close the window after K frames (default 0 = when closed)\n"
-           "  --screenshot FILE.exr  on closing, write the last frame as FILE.exr and FILE.png\n"
-           "                       (the same code as the screenshot key)\n"
-           "\n"
-           "Benchmark (dvsgi bench; see docs/benchmarks.md):\n"
-           "  Without SCENE: the paper's Table II suite, Cornell box, Sibenik and Crytek Sponza\n"
-           "  from the shared folder, each with the Stanford bunny as the moving dynamic object\n"
-           "  (--add-model replaces the bunny). Images are 640x360 unless --width/--height are given.\n"
-           "  --bench-out FILE.json  results (default out/bench.json); a markdown table goes to stdout\n"
-           "  --shared DIR         the shared data folder holding scenes/ (default ../shared)\n"
-           "  --bench-voxels LIST  voxel resolutions, e.g. 128,256 (default 128,256)\n"
-           "  --bench-frames K     measured frames per scene and resolution (default 10); each\n"
-           "                       re-runs static voxelization. Median, min and max per pass\n"
-           "  --bench-warmup W     frames rendered before measuring, not recorded (default 2)\n"
-           "  --bench-max-seconds S  stop measuring a scene/resolution once it has run S seconds\n"
-           "                       (at least one frame; the JSON records the frames measured)\n"
-           "                       (default 0 = always K frames)\n"
-           "  --bench-quick        Cornell box only, 32^3, 2 frames, 160x90 (a smoke test)\n"
-           "  --bench-tables       also measure the variants of the paper's Table III (voxel\n"
-           "                       raycast occlusion) and Table V (shadow cones of 1, 5, 10, 25\n"
-           "                       degrees) for every scene and size (six times the runs)\n"
-           "\n"
-           "Exit status: 0 on success, 2 for a bad command line, another non-zero value\n"
-           "for any other failure.\n";
+    std::string out =
+        "dvsgi " DVSGI_VERSION
+        " - voxel global illumination renderer (Vulkan)\n"
+        "\n"
+        "Usage:\n"
+        "  dvsgi render [SCENE] [options]   render one frame to an EXR (and a PNG preview)\n"
+        "  dvsgi view   [SCENE] [options]   interactive window\n"
+        "  dvsgi bench  [SCENE] [options]   time the frame passes\n"
+        "  dvsgi help | --help | -h         this text\n"
+        "  dvsgi --version                  print the version\n"
+        "\n"
+        "SCENE is a glTF 2.0 (.gltf/.glb), OBJ (+MTL) or PLY file; without one the built-in\n"
+        "Cornell box is used. Options take their value as '--opt VALUE' or '--opt=VALUE'; '--'\n"
+        "ends the options. Each option says its range, unit and default; options not for all\n"
+        "commands name theirs; 'viewer: next frame' marks what the viewer's panel changes\n"
+        "without building a new renderer.\n";
+    for (const SettingGroup& g : settingGroups()) {
+        out += "\n" + g.name + ":\n";
+        if (!g.intro.empty()) {
+            out += "  ";
+            wrap(out, g.intro, 2, 2);
+        }
+        for (const Setting& s : settingsTable()) {
+            if (s.group != g.name) continue;
+            std::string head = "  --" + s.name + (s.metavar.empty() ? "" : " " + s.metavar);
+            if (head.size() + 1 > kIndent) {
+                out += head + "\n" + std::string(kIndent, ' ');
+            } else {
+                out += head + std::string(kIndent - head.size(), ' ');
+            }
+            wrap(out, s.help + " (" + details(s) + ")", kIndent, kIndent);
+        }
+    }
+    out +=
+        "\n"
+        "Exit status: 0 on success, 2 for a bad command line, 3 when --validate saw validation\n"
+        "errors, 1 for any other failure.\n";
+    return out;
 }
 
 }  // namespace dvsgi::app

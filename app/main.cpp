@@ -1,5 +1,6 @@
 // dvsgi command-line entry point: parse, dispatch, and turn every failure into
-// one line on stderr with a non-zero exit code.
+// one line on stderr with a non-zero exit code. Library messages about a
+// setting start with its name, which becomes the flag here.
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -9,6 +10,7 @@
 #include "image/image_io.h"
 #include "options.h"
 #include "render_command.h"
+#include "settings_table.h"
 #include "view_command.h"
 #include "scene/load.h"
 
@@ -25,18 +27,18 @@ int main(int argc, char** argv) {
             case app::Command::Version: std::puts("dvsgi 0.1.0"); return 0;
             case app::Command::Render: return app::runRender(parsed.render);
             case app::Command::View: return app::runView(parsed.render);
-            case app::Command::Bench: return app::runBench(parsed.render, argc, argv);
+            case app::Command::Bench: return app::runBench(parsed.render);
         }
     } catch (const scene::LoadError& e) {
         std::fprintf(stderr, "dvsgi: %s\n", e.what());
     } catch (const image::IoError& e) {
         std::fprintf(stderr, "dvsgi: %s\n", e.what());
     } catch (const gpu::GpuError& e) {
-        std::fprintf(stderr, "dvsgi: %s\n", e.what());
+        std::fprintf(stderr, "dvsgi: %s\n", app::withFlagNames(e.what()).c_str());
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "dvsgi: out of host memory\n");
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "dvsgi: %s\n", e.what());
+        std::fprintf(stderr, "dvsgi: %s\n", app::withFlagNames(e.what()).c_str());
     }
     return 1;
 }

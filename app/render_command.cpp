@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "scene/load.h"
+#include "settings_table.h"
 #include "shared/composite_pass.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxelize.h"
@@ -34,25 +35,6 @@ std::string framePath(const std::string& pattern, uint32_t frame) {
     std::string number = std::to_string(frame);
     if (number.size() < last - first) number.insert(0, last - first - number.size(), '0');
     return pattern.substr(0, first) + number + pattern.substr(last);
-}
-
-render::ViewMode toViewMode(ViewKind k) {
-    switch (k) {
-        case ViewKind::VoxelAlbedo: return render::ViewMode::VoxelAlbedo;
-        case ViewKind::VoxelNormal: return render::ViewMode::VoxelNormal;
-        case ViewKind::VoxelEmission: return render::ViewMode::VoxelEmission;
-        case ViewKind::VoxelRadiance: return render::ViewMode::VoxelRadiance;
-        case ViewKind::VoxelDirectional: return render::ViewMode::VoxelDirectional;
-        default: return render::ViewMode::Final;
-    }
-}
-
-vxgi::Occlusion occlusionMode(const std::string& m) {
-    if (m == "shadowmap") return vxgi::Occlusion::ShadowMap;
-    if (m == "raycast") return vxgi::Occlusion::RaycastHard;
-    if (m == "soft") return vxgi::Occlusion::RaycastSoft;
-    if (m == "none") return vxgi::Occlusion::None;
-    return vxgi::Occlusion::PerLight;
 }
 
 void markDynamic(scene::Scene& s, const std::vector<std::string>& names) {
@@ -124,12 +106,6 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
     nlohmann::json j;
     j["scene"] = scene.source;
     j["device"] = ctx.deviceName;
-    j["width"] = o.width;
-    j["height"] = o.height;
-    j["supersample"] = o.supersample;
-    j["shadow_map_size"] = o.shadowMapSize;
-    j["camera"] = o.camera;
-    j["frames"] = o.frames;
     j["triangles"] = renderer.triangleCount();
     j["lights"] = scene.lights.size();
     j["gpu_ms"] = stats.gpuMs;
@@ -146,7 +122,7 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
                        {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
                        {"voxel_size", v->grid.voxelSize}};
     }
-    j["parameters"] = parametersJson(o);
+    j["settings"] = settingsJson(o, kRender);
     j["validation_errors"] = ctx.validationErrors();
     return j;
 }
@@ -187,35 +163,6 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 
 }  // namespace
 
-nlohmann::json parametersJson(const RenderOptions& o) {
-    nlohmann::json p = {{"voxels", o.voxels},
-                       {"conservative", o.hardwareConservative ? "auto" : "gs"},
-                       {"bounces", o.bouncesAuto ? nlohmann::json("auto") : nlohmann::json(o.bounces)},
-                       {"bounce_convergence", o.bounceConvergence},
-                       {"max_bounces", o.maxBounces},
-                       {"emitters", o.emitterLights ? "lights" : "cones"},
-                       {"emitter_patches", o.emitterPatches},
-                       {"normal_weighted", o.normalWeighted},
-                       {"voxel_occlusion", o.voxelOcclusion},
-                       {"soft_kappa", o.softKappa},
-                       {"cones", o.cones},
-                       {"cone_aperture_degrees", o.cones == 6 ? 60.0 : 40.8},
-                       {"cone_step_beta", o.coneStep},
-                       {"cone_min_step_voxels", o.coneMinStep},
-                       {"max_distance_m", o.maxDistance},
-                       {"cone_offset_voxels", o.coneOffset},
-                       {"cone_clearance", o.coneClearance},
-                       {"ao_lambda", o.aoLambda},
-                       {"ao", o.ao},
-                       {"specular", o.specular},
-                       {"shadows", o.shadows},
-                       {"shadow_aperture_degrees", o.shadowAperture},
-                       {"trace_scale", o.traceScale},
-                       {"output", o.output}};
-    for (const auto& [name, mode] : o.lightOcclusion) p["light_occlusion"][name] = mode;
-    return p;
-}
-
 scene::Scene loadForOptions(const RenderOptions& o) {
     scene::LoadOptions lo;
     lo.allowOutsideReferences = o.allowOutsideReferences;
@@ -223,50 +170,6 @@ scene::Scene loadForOptions(const RenderOptions& o) {
     markDynamic(scene, o.dynamicNodes);
     if (!o.addModel.empty()) addMovingModel(scene, o.addModel, o.addModelSize, o.allowOutsideReferences);
     return scene;
-}
-
-render::RenderSettings settingsForOptions(const RenderOptions& o) {
-    render::RenderSettings rs;
-    rs.width = o.width;
-    rs.height = o.height;
-    rs.supersample = o.supersample;
-    rs.shadowMapSize = o.shadowMapSize;
-    rs.camera = o.camera;
-    rs.voxels = o.voxels;
-    rs.hasVoxelBox = o.hasVoxelBox;
-    rs.voxelBoxMin = glm::vec3(o.voxelBox[0], o.voxelBox[1], o.voxelBox[2]);
-    rs.voxelBoxMax = glm::vec3(o.voxelBox[3], o.voxelBox[4], o.voxelBox[5]);
-    rs.hardwareConservative = o.hardwareConservative;
-    rs.view.mode = toViewMode(o.view);
-    rs.view.mip = o.viewMip;
-    rs.view.direction = o.viewDirection;
-    rs.voxelLight.bounceMode = o.bouncesAuto ? vxgi::BounceMode::Converge : vxgi::BounceMode::Fixed;
-    rs.voxelLight.bounces = o.bounces;
-    rs.voxelLight.convergence = o.bounceConvergence;
-    rs.voxelLight.maxBounces = o.maxBounces;
-    rs.emitterLights = o.emitterLights;
-    rs.emitterPatches = o.emitterPatches;
-    rs.voxelLight.normalWeighted = o.normalWeighted;
-    rs.voxelLight.softKappa = o.softKappa;
-    rs.voxelLight.occlusion = occlusionMode(o.voxelOcclusion);
-    for (const auto& [name, mode] : o.lightOcclusion) rs.lightOcclusion.emplace_back(name, occlusionMode(mode));
-    rs.cones.coneSet = o.cones;
-    rs.cones.stepFactor = o.coneStep;
-    rs.cones.minStepVoxels = o.coneMinStep;
-    rs.cones.maxDistance = o.maxDistance;
-    rs.cones.offsetVoxels = o.coneOffset;
-    rs.cones.clearance = o.coneClearance;
-    rs.gather.aoLambda = o.aoLambda;
-    rs.gather.specular = o.specular;
-    rs.gather.minSpecularDegrees = o.minSpecularAngle;
-    rs.gather.traceScale = o.traceScale;
-    rs.shadowCones.enabled = o.shadows == "cone";
-    rs.shadowCones.apertureDegrees = o.shadowAperture;
-    rs.applyAO = o.ao;
-    static const char* terms[] = {"full", "direct", "indirect", "specular", "ao", "shadow"};
-    for (uint32_t i = 0; i < 6; ++i)
-        if (o.output == terms[i]) rs.outputTerm = i;
-    return rs;
 }
 
 // A --metrics path whose folder cannot be made fails before anything is
@@ -283,7 +186,7 @@ void checkMetricsPath(const std::string& path) {
 
 int runRender(const RenderOptions& o) {
     checkMetricsPath(o.metricsPath);
-    if (!o.aovExr.empty() && o.view != ViewKind::Final)
+    if (!o.aovExr.empty() && o.settings.view.mode != render::ViewMode::Final)
         throw std::runtime_error("--aov: the terms exist only for the final image, not for --view voxels:...");
     const scene::Scene scene = loadForOptions(o);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
@@ -294,7 +197,7 @@ int runRender(const RenderOptions& o) {
     co.printDevice = !o.quiet;
     gpu::Context ctx(co);
 
-    render::Renderer renderer(ctx, scene, settingsForOptions(o));
+    render::Renderer renderer(ctx, scene, o.settings);
     for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), renderer.voxelizer()->hardwareConservative());
 
@@ -312,7 +215,7 @@ int runRender(const RenderOptions& o) {
                             stats.converged ? "" : " (not converged)");
             if (stats.bounceChange >= 0.0 && !stats.converged)
                 std::fprintf(stderr, "warning: --bounces auto: still changing by %.4f after --max-bounces %u\n",
-                             stats.bounceChange, o.maxBounces);
+                             stats.bounceChange, o.settings.voxelLight.maxBounces);
         }
         if (!eachFrame && frame + 1 < o.frames) continue;
         const image::ImageRGBA32F img = renderer.readOutput();

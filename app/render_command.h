@@ -1,19 +1,13 @@
 // `dvsgi render`: load, render one frame headless, write EXR/PNG/metrics.
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include "options.h"
-#include "render/renderer.h"
 #include "scene/scene.h"
 
 namespace dvsgi::app {
 
 // The scene with --dynamic and --add-model applied.
 scene::Scene loadForOptions(const RenderOptions& options);
-render::RenderSettings settingsForOptions(const RenderOptions& options);
-// Every renderer parameter as the metrics JSON records it (`parameters`).
-nlohmann::json parametersJson(const RenderOptions& options);
 
 // Returns the process exit code. Errors are printed as one line on stderr.
 int runRender(const RenderOptions& options);

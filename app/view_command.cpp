@@ -24,6 +24,7 @@
 #include "image/image_io.h"
 #include "render/renderer.h"
 #include "render_command.h"
+#include "settings_table.h"
 #include "scene/scene.h"
 #include "view_swapchain.h"
 
@@ -35,7 +36,7 @@ namespace dvsgi::app {
 class ViewPanel {
 public:
     struct Actions {
-        bool rebuildRenderer = false, sceneEdited = false, recreateSwapchain = false, screenshot = false;
+        bool settingsChanged = false, sceneEdited = false, recreateSwapchain = false, screenshot = false;
         int camera = -1;
     };
     ViewPanel(const gpu::Context&, GLFWwindow*, const Swapchain&) {}
@@ -54,6 +55,14 @@ public:
 namespace dvsgi::app {
 
 namespace {
+
+// Interactive frames never block on converging: with --bounces auto every
+// frame adds one bounce from the previous frame's light.
+[[maybe_unused]] render::RenderSettings viewSettings(const RenderOptions& o) {
+    render::RenderSettings rs = o.settings;
+    if (rs.voxelLight.bounceMode == vxgi::BounceMode::Converge) rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
+    return rs;
+}
 
 // One line and a non-zero exit when there is no display to open a window on.
 const char* const kNoDisplay =
@@ -214,7 +223,7 @@ int runView(const RenderOptions& options) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     Window window;
-    window.handle = glfwCreateWindow(int(o.width), int(o.height), "dvsgi view", nullptr, nullptr);
+    window.handle = glfwCreateWindow(int(o.settings.width), int(o.settings.height), "dvsgi view", nullptr, nullptr);
     if (!window.handle) {
         std::fprintf(stderr, "dvsgi: view cannot create a window: %s\n", g_glfwError.c_str());
         return 1;
@@ -241,16 +250,12 @@ int runView(const RenderOptions& options) {
 
     int fbw = 0, fbh = 0;
     glfwGetFramebufferSize(window.handle, &fbw, &fbh);
-    o.width = uint32_t(std::max(fbw, 1));
-    o.height = uint32_t(std::max(fbh, 1));
-    swapchain.create(o.width, o.height, o.vsync);
+    o.settings.width = uint32_t(std::max(fbw, 1));
+    o.settings.height = uint32_t(std::max(fbh, 1));
+    swapchain.create(o.settings.width, o.settings.height, o.vsync);
 
     auto makeRenderer = [&](const scene::Scene& s) {
-        render::RenderSettings rs = settingsForOptions(o);
-        // Interactive frames never block on converging: with --bounces auto
-        // every frame adds one bounce from the previous frame's light.
-        if (rs.voxelLight.bounceMode == vxgi::BounceMode::Converge) rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
-        auto r = std::make_unique<render::Renderer>(ctx, s, rs);
+        auto r = std::make_unique<render::Renderer>(ctx, s, viewSettings(o));
         for (const std::string& w : r->warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
         return r;
     };
@@ -263,10 +268,23 @@ int runView(const RenderOptions& options) {
             renderer = makeRenderer(renderer->scene());
             return true;
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", e.what());
+            std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", withFlagNames(e.what()).c_str());
             o = previous;
             return false;
         }
+    };
+    // A panel change: from the next frame when the renderer can take it, else
+    // (new resources needed) a new renderer.
+    auto applyOrRebuild = [&](const RenderOptions& previous) {
+        try {
+            if (renderer->applySettings(viewSettings(o))) return true;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", withFlagNames(e.what()).c_str());
+            o = previous;
+            renderer->applySettings(viewSettings(o));
+            return false;
+        }
+        return rebuild(previous);
     };
     loaded = scene::Scene{};
     ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
@@ -301,11 +319,11 @@ int runView(const RenderOptions& options) {
             glfwWaitEvents();
             continue;
         }
-        if (uint32_t(fbw) != o.width || uint32_t(fbh) != o.height) {
+        if (uint32_t(fbw) != o.settings.width || uint32_t(fbh) != o.settings.height) {
             const RenderOptions previous = o;
-            o.width = uint32_t(fbw);
-            o.height = uint32_t(fbh);
-            swapchain.create(o.width, o.height, o.vsync);
+            o.settings.width = uint32_t(fbw);
+            o.settings.height = uint32_t(fbh);
+            swapchain.create(o.settings.width, o.settings.height, o.vsync);
             rebuild(previous);  // on failure the old-size frame is shown scaled
         }
 
@@ -317,8 +335,8 @@ int runView(const RenderOptions& options) {
         if (panel.wantsKeyboard()) input.pressed.clear();  // typing into the panel
         int wantCamera = ui.camera;
         if (ui.screenshot) input.pressed.push_back(GLFW_KEY_P);
-        if (ui.recreateSwapchain) swapchain.create(o.width, o.height, o.vsync);
-        if (ui.rebuildRenderer) rebuild(before);
+        if (ui.recreateSwapchain) swapchain.create(o.settings.width, o.settings.height, o.vsync);
+        if (ui.settingsChanged) applyOrRebuild(before);
         objectMoved = ui.sceneEdited;
 
         // Discrete keys.
@@ -327,19 +345,19 @@ int runView(const RenderOptions& options) {
             if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) wantCamera = key - GLFW_KEY_1;
             if (key == GLFW_KEY_V) {
                 o.vsync = !o.vsync;
-                swapchain.create(o.width, o.height, o.vsync);
+                swapchain.create(o.settings.width, o.settings.height, o.vsync);
                 std::printf("present mode: %s\n", swapchain.presentModeName());
             }
             if (key == GLFW_KEY_P) screenshotWanted = true;
             if (key == GLFW_KEY_TAB) ++selected;
         }
         input.pressed.clear();
-        if (wantCamera >= 0 && wantCamera != o.camera) {
+        if (wantCamera >= 0 && wantCamera != o.settings.camera) {
             const size_t cameras =
                 scene::placedCameras(renderer->scene(), scene::worldMatrices(renderer->scene())).size();
             if (size_t(wantCamera) < cameras) {
                 const RenderOptions previous = o;
-                o.camera = wantCamera;
+                o.settings.camera = wantCamera;
                 if (rebuild(previous)) fly.setFrom(renderer->camera().world);
             }
         }
@@ -398,7 +416,7 @@ int runView(const RenderOptions& options) {
             }
         }
         if (cameraMoved) {
-            const int node = cameraNode(sc, o.camera);
+            const int node = cameraNode(sc, o.settings.camera);
             if (node >= 0) setNodeWorld(sc, node, fly.world());
         }
         // Same frame sequence as `dvsgi render --frames K`: fixed time steps.
@@ -422,7 +440,7 @@ int runView(const RenderOptions& options) {
             }
         }
         if (!swapchain.present(renderer->outputImage(), o.exposure, [&](VkCommandBuffer cmd) { panel.record(cmd); }))
-            swapchain.create(o.width, o.height, o.vsync);
+            swapchain.create(o.settings.width, o.settings.height, o.vsync);
         ++frame;
 
         frameMsAvg = frame == 1 ? frameSeconds * 1000.0 : 0.9 * frameMsAvg + 0.1 * frameSeconds * 1000.0;
@@ -445,7 +463,7 @@ int runView(const RenderOptions& options) {
         std::printf("%-24s %10s\n", "pass", "GPU ms");
         for (const gpu::TimerResult& r : stats.passes) std::printf("%-24s %10.3f\n", r.name.c_str(), r.ms);
         std::printf("%-24s %10.3f\n", "frame total", stats.gpuMs);
-        std::printf("view: %u frame(s), %ux%u, %s\n", frame, o.width, o.height, swapchain.presentModeName());
+        std::printf("view: %u frame(s), %ux%u, %s\n", frame, o.settings.width, o.settings.height, swapchain.presentModeName());
     }
     renderer.reset();
     if (ctx.validationErrors() > 0) {

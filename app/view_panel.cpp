@@ -17,6 +17,8 @@
 #include "gpu/context.h"
 #include "render/renderer.h"
 #include "scene/scene.h"
+#include "settings_table.h"
+#include "view_panel_settings.h"
 #include "view_swapchain.h"
 #include "vxgi/volumes.h"
 
@@ -44,36 +46,6 @@ bool comboString(const char* label, std::string& value, std::initializer_list<co
     return changed;
 }
 
-// Sliders rebuild the renderer when released, not on every drag step.
-bool released() { return ImGui::IsItemDeactivatedAfterEdit(); }
-
-bool sliderU(const char* label, uint32_t& v, int lo, int hi) {
-    int i = int(v);
-    ImGui::SliderInt(label, &i, lo, hi);
-    v = uint32_t(i);
-    return released();
-}
-
-bool sliderF(const char* label, float& v, float lo, float hi, const char* fmt = "%.3f") {
-    ImGui::SliderFloat(label, &v, lo, hi, fmt);
-    return released();
-}
-
-bool powerOfTwo(const char* label, uint32_t& v, std::initializer_list<uint32_t> choices) {
-    bool changed = false;
-    if (ImGui::BeginCombo(label, std::to_string(v).c_str())) {
-        for (uint32_t c : choices)
-            if (ImGui::Selectable(std::to_string(c).c_str(), c == v) && c != v) {
-                v = c;
-                changed = true;
-            }
-        ImGui::EndCombo();
-    }
-    return changed;
-}
-
-bool onOff(const char* label, bool& v) { return ImGui::Checkbox(label, &v); }
-
 // Direction of a node's -Z as yaw/pitch in degrees (yaw 0 = -Z, about +Y).
 glm::vec2 yawPitch(const glm::quat& q) {
     const glm::vec3 f = glm::normalize(q * glm::vec3(0, 0, -1));
@@ -84,9 +56,6 @@ glm::quat fromYawPitch(glm::vec2 deg) {
     const glm::vec2 r = glm::radians(deg);
     return glm::angleAxis(-r.x, glm::vec3(0, 1, 0)) * glm::angleAxis(r.y, glm::vec3(1, 0, 0));
 }
-
-const char* kViewModes[] = {"final", "voxels:albedo", "voxels:normal", "voxels:emission", "voxels:radiance",
-                            "voxels:directional"};
 
 }  // namespace
 
@@ -153,8 +122,8 @@ ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
         scene::Scene& s = renderer.scene();
         const size_t cameras = scene::placedCameras(s, scene::worldMatrices(s)).size();
-        int cam = o.camera;
-        if (ImGui::SliderInt("camera", &cam, 0, int(std::max<size_t>(cameras, 1) - 1)) && cam != o.camera)
+        int cam = o.settings.camera;
+        if (ImGui::SliderInt("camera", &cam, 0, int(std::max<size_t>(cameras, 1) - 1)) && cam != o.settings.camera)
             a.camera = cam;
         bool vsync = o.vsync;
         if (ImGui::Checkbox("vsync", &vsync)) {
@@ -162,74 +131,8 @@ ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer
             a.recreateSwapchain = true;
         }
         ImGui::SliderFloat("fly speed (m/s)", &flySpeed, 0.01f, 100.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
-        ImGui::SliderFloat("exposure (EV)", &o.exposure, -10.0f, 10.0f, "%.1f");
     }
-
-    if (ImGui::CollapsingHeader("Renderer")) {
-        bool r = false;
-        r |= powerOfTwo("shadow map", o.shadowMapSize, {256, 512, 1024, 2048, 4096});
-        r |= sliderU("supersample", o.supersample, 1, 4);
-        r |= powerOfTwo("voxels", o.voxels, {0, 32, 64, 128, 256, 512});
-        if (ImGui::Checkbox("voxel box (else scene bounds)", &o.hasVoxelBox)) {
-            const vxgi::VoxelVolumes* v = renderer.volumes();
-            if (o.hasVoxelBox && v && !(o.voxelBox[0] < o.voxelBox[3])) {  // start from the current grid
-                const glm::vec3 lo = v->grid.origin, hi = lo + v->grid.voxelSize * float(v->grid.n);
-                for (int i = 0; i < 3; ++i) {
-                    o.voxelBox[i] = lo[i];
-                    o.voxelBox[i + 3] = hi[i];
-                }
-            }
-            r = true;
-        }
-        if (o.hasVoxelBox) {
-            ImGui::DragFloat3("box min", o.voxelBox, 0.01f);
-            r |= released();
-            ImGui::DragFloat3("box max", o.voxelBox + 3, 0.01f);
-            r |= released();
-        }
-        // An empty box cannot hold a grid: wait until min < max on every axis.
-        const bool boxOk = !o.hasVoxelBox || (o.voxelBox[0] < o.voxelBox[3] && o.voxelBox[1] < o.voxelBox[4] &&
-                                               o.voxelBox[2] < o.voxelBox[5]);
-        bool hw = o.hardwareConservative;
-        if (ImGui::Checkbox("hardware conservative raster", &hw)) {
-            o.hardwareConservative = hw;
-            r = true;
-        }
-        int view = int(o.view);
-        if (ImGui::Combo("view", &view, kViewModes, 6)) {
-            o.view = ViewKind(view);
-            r = true;
-        }
-        r |= sliderU("view mip", o.viewMip, 0, 8);
-        r |= sliderU("view direction", o.viewDirection, 0, 5);
-        r |= ImGui::Checkbox("bounces: feedback (one per frame)", &o.bouncesAuto);
-        if (!o.bouncesAuto) r |= sliderU("bounces per frame", o.bounces, 0, 16);
-        r |= ImGui::Checkbox("emitters as area lights", &o.emitterLights);
-        r |= sliderU("emitter patches", o.emitterPatches, 1, 256);
-        r |= onOff("normal-weighted", o.normalWeighted);
-        r |= comboString("voxel occlusion", o.voxelOcclusion, {"per-light", "shadowmap", "raycast", "soft", "none"});
-        r |= sliderF("soft kappa", o.softKappa, 0.0f, 4.0f);
-        bool sixteen = o.cones == 16;
-        if (ImGui::Checkbox("16 cones (off: 6)", &sixteen)) {
-            o.cones = sixteen ? 16 : 6;
-            r = true;
-        }
-        r |= sliderF("cone step", o.coneStep, 0.05f, 4.0f);
-        r |= sliderF("cone min step", o.coneMinStep, 0.05f, 4.0f);
-        r |= sliderF("max distance (m)", o.maxDistance, 0.0f, 100.0f);
-        r |= sliderF("cone offset (voxels)", o.coneOffset, 0.0f, 8.0f);
-        r |= sliderF("cone clearance K", o.coneClearance, 0.0f, 8.0f);
-        r |= onOff("specular", o.specular);
-        r |= sliderF("min specular angle", o.minSpecularAngle, 0.0f, 45.0f);
-        r |= sliderF("ao lambda", o.aoLambda, 0.0f, 4.0f);
-        r |= onOff("ao", o.ao);
-        r |= comboString("shadows", o.shadows, {"map", "cone"});
-        r |= sliderF("shadow aperture", o.shadowAperture, 0.5f, 45.0f);
-        r |= sliderF("trace scale", o.traceScale, 0.125f, 1.0f);
-        r |= comboString("output", o.output, {"full", "direct", "indirect", "specular", "ao", "shadow"});
-        ImGui::SliderFloat("time step (s)", &o.timeStep, 0.0f, 0.5f);
-        a.rebuildRenderer |= r && boxOk;
-    }
+    a.settingsChanged = settingsWidgets(o, renderer);
 
     scene::Scene& s = renderer.scene();
     if (ImGui::CollapsingHeader("Lights")) {
@@ -243,17 +146,17 @@ ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer
                 a.sceneEdited |= ImGui::DragFloat("intensity", &l.intensity, 0.05f, 0.0f, 1e6f);
                 if (l.type != scene::LightType::Directional)
                     a.sceneEdited |= ImGui::DragFloat3("position", &n.translation.x, 0.01f);
-                // Its voxel occlusion mode (--light-occlusion NAME=MODE): rebuilds the renderer.
+                // Its voxel occlusion mode (--light-occlusion NAME=MODE), from the next frame.
                 if (!l.name.empty()) {
-                    auto it = std::find_if(o.lightOcclusion.begin(), o.lightOcclusion.end(),
-                                           [&](const auto& e) { return e.first == l.name; });
-                    std::string mode = it == o.lightOcclusion.end() ? "shadowmap" : it->second;
+                    auto& list = o.settings.lightOcclusion;
+                    auto it = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.first == l.name; });
+                    // Spelled as --voxel-occlusion spells it.
+                    RenderOptions spelling;
+                    spelling.settings.voxelLight.occlusion = it == list.end() ? vxgi::Occlusion::ShadowMap : it->second;
+                    std::string mode = findSetting("voxel-occlusion")->text(spelling);
                     if (comboString("voxel occlusion", mode, {"shadowmap", "raycast", "soft", "none"})) {
-                        if (it == o.lightOcclusion.end())
-                            o.lightOcclusion.emplace_back(l.name, mode);
-                        else
-                            it->second = mode;
-                        a.rebuildRenderer = true;
+                        if (it != list.end()) list.erase(it);
+                        a.settingsChanged = findSetting("light-occlusion")->parse(o, l.name + "=" + mode);
                     }
                 }
                 if (l.type != scene::LightType::Point) {

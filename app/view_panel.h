@@ -35,7 +35,7 @@ public:
 
     // What the user asked for this frame.
     struct Actions {
-        bool rebuildRenderer = false;  // a renderer parameter changed: recreate it with the options
+        bool settingsChanged = false;  // a renderer setting changed: Renderer::applySettings, or a new one
         bool sceneEdited = false;      // a light or dynamic node changed: Renderer::sceneChanged()
         bool recreateSwapchain = false;  // vsync toggled
         bool screenshot = false;

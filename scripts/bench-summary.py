@@ -10,8 +10,12 @@ data = json.load(open(sys.argv[1]))
 ms = [m for m in data["measurements"] if m.get("status") == "ok"]
 dev = data["device"]
 s = data["settings"]
+# Settings are named as their flags (dvsgi --help); files from before the
+# settings table used frames/warmup_frames.
+frames = s.get("bench-frames", s.get("frames"))
+warmup = s.get("bench-warmup", s.get("warmup_frames"))
 print(f"Device: {dev['name']} (driver {dev.get('driver_info', '?')}), {s['width']}x{s['height']}, "
-      f"{s['frames']} measured + {s['warmup_frames']} warm-up frames, {data['date']}\n")
+      f"{frames} measured + {warmup} warm-up frames, {data['date']}\n")
 base = [m for m in ms if not m.get("variant")]
 cols = [f"{m['scene']} {m['voxels']}³" for m in base]
 order = []

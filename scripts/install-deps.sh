@@ -8,7 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   glslc spirv-tools
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
-  libassimp-dev nlohmann-json3-dev libstb-dev libglm-dev
+  libassimp-dev nlohmann-json3-dev libstb-dev libglm-dev libcli11-dev
   libglfw3-dev libimgui-dev xvfb xauth
   libgtest-dev zlib1g-dev libjpeg-dev libopenexr-dev libimath-dev
   python3 python3-numpy python3-openimageio

@@ -3,7 +3,7 @@
 // and turns every internal exception into dvsgi::Error naming the setting.
 #include "dvsgi/dvsgi.h"
 
-#include <cstring>
+#include <string_view>
 #include <utility>
 
 #include "gpu/barriers.h"
@@ -22,18 +22,22 @@ namespace dvsgi {
 
 namespace {
 
-// Library messages still name some `dvsgi render` flags; a library user sees
-// the setting instead.
+// Internal messages about a setting start with the setting's name as
+// `dvsgi render` spells it ("voxels: ..."); a library user sees the public
+// field instead, or a description of a setting the public API does not expose.
 std::string settingNames(std::string message) {
-    static const std::pair<const char*, const char*> names[] = {
-        {"--camera", "Settings::camera"},       {"--voxels", "Settings::voxels"},
-        {"--device", "DeviceOptions::deviceName"}, {"--validate", "DeviceOptions::validation"},
-        {"--shadows cone", "shadow cones"},     {"--light-occlusion", "light occlusion"},
-        {"--view", "voxel view"},
+    static const std::pair<std::string_view, const char*> names[] = {
+        {"width", "Settings::width"},           {"height", "Settings::height"},
+        {"supersample", "Settings::supersample"}, {"camera", "Settings::camera"},
+        {"voxels", "Settings::voxels"},         {"shadow-map", "Settings::shadowMapSize"},
+        {"device", "DeviceOptions::deviceName"}, {"validate", "DeviceOptions::validation"},
+        {"shadows", "shadow cones"},            {"light-occlusion", "light occlusion"},
+        {"view", "voxel view"},
     };
-    for (const auto& [flag, setting] : names)
-        for (size_t at = message.find(flag); at != std::string::npos; at = message.find(flag, at))
-            message.replace(at, std::strlen(flag), setting);
+    const size_t colon = message.find(':');
+    for (const auto& [setting, name] : names)
+        if (colon != std::string::npos && std::string_view(message).substr(0, colon) == setting)
+            return name + message.substr(colon);
     return message;
 }
 
@@ -55,7 +59,7 @@ auto guarded(F&& f) -> decltype(f()) {
 
 bool powerOfTwo(uint32_t n) { return n != 0 && (n & (n - 1)) == 0; }
 
-// The same ranges as `dvsgi render` (app/cli.cpp), so both accept the same settings.
+// The same ranges as `dvsgi render` (app/settings_entries.cpp), so both accept the same settings.
 void validate(const Settings& s, uint32_t cameras) {
     if (s.width < 1 || s.width > 16384) badSetting("width", "1..16384", std::to_string(s.width));
     if (s.height < 1 || s.height > 16384) badSetting("height", "1..16384", std::to_string(s.height));
@@ -80,13 +84,10 @@ void validate(const Settings& s, uint32_t cameras) {
         badSetting("output", "an Output value", std::to_string(int(s.output)));
 }
 
-// What app/render_command.cpp's settingsForOptions builds from the same
-// values and the CLI's defaults for everything the public Settings leaves out
-// (cone step 0.5, minimum step 0.5 voxel, grid-diagonal reach, offset 2.5
-// voxels, clearance 3, shadow maps, per-light occlusion). tests/api checks
-// that both produce the same image.
+// The library's defaults (render::RenderSettings' initialisers, which the CLI
+// also starts from) with the public settings on top, so both give the same
+// image for the same values; tests/api checks it against `dvsgi render`.
 render::RenderSettings toRenderSettings(const Settings& s) {
-    constexpr float kConeStep = 0.5f, kMinStep = 0.5f, kOffset = 2.5f, kClearance = 3.0f;
     render::RenderSettings rs;
     rs.width = s.width;
     rs.height = s.height;
@@ -95,16 +96,10 @@ render::RenderSettings toRenderSettings(const Settings& s) {
     rs.camera = int(s.camera);
     rs.voxels = s.voxels;
     rs.voxelLight.bounceMode = s.bounces < 0 ? vxgi::BounceMode::Converge : vxgi::BounceMode::Fixed;
-    rs.voxelLight.bounces = s.bounces < 0 ? 1u : uint32_t(s.bounces);
+    if (s.bounces >= 0) rs.voxelLight.bounces = uint32_t(s.bounces);
     rs.voxelLight.convergence = s.bounceConvergence;
     rs.voxelLight.maxBounces = s.maxBounces;
-    rs.voxelLight.occlusion = vxgi::Occlusion::PerLight;
     rs.cones.coneSet = s.cones;
-    rs.cones.stepFactor = kConeStep;
-    rs.cones.minStepVoxels = kMinStep;
-    rs.cones.maxDistance = 0.0f;
-    rs.cones.offsetVoxels = kOffset;
-    rs.cones.clearance = kClearance;
     rs.gather.aoLambda = s.aoLambda;
     rs.gather.specular = s.specular;
     rs.gather.traceScale = s.traceScale;

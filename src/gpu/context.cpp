@@ -160,7 +160,7 @@ Context::Context(const ContextOptions& options) {
     std::vector<const char*> extensions = options.instanceExtensions;
     if (options.validation) {
         if (!hasLayer(kValidation))
-            throw GpuError("--validate: the Khronos validation layer is not installed "
+            throw GpuError("validate: the Khronos validation layer is not installed "
                            "(Debian package vulkan-validationlayers)", VK_ERROR_LAYER_NOT_PRESENT);
         layers.push_back(kValidation);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -207,7 +207,7 @@ Context::Context(const ContextOptions& options) {
         for (const std::string& n : listDevices(instance)) names += (names.empty() ? "" : ", ") + n;
         throw GpuError(options.deviceName.empty()
                            ? "no Vulkan 1.3 device found; devices: " + names
-                           : "--device: no Vulkan 1.3 device matches '" + options.deviceName + "'; devices: " + names,
+                           : "device: no Vulkan 1.3 device matches '" + options.deviceName + "'; devices: " + names,
                        VK_ERROR_INITIALIZATION_FAILED);
     }
     vkGetPhysicalDeviceProperties(physical, &properties);

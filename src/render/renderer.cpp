@@ -46,7 +46,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     const std::vector<scene::PlacedCamera> cameras = scene::placedCameras(scene, world);
     if (cameras.empty()) throw std::runtime_error(scene.source + ": the scene has no camera");
     if (settings.camera < 0 || size_t(settings.camera) >= cameras.size())
-        throw std::runtime_error("--camera: " + std::to_string(settings.camera) + " is out of range; " + scene.source +
+        throw std::runtime_error("camera: " + std::to_string(settings.camera) + " is out of range; " + scene.source +
                                  " has " + std::to_string(cameras.size()) + " camera(s)");
     camera_ = cameras[size_t(settings.camera)];
     const float aspect = float(settings.width) / float(settings.height);
@@ -59,14 +59,14 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     for (const auto& entry : settings.lightOcclusion) {
         const bool found = std::any_of(scene.lights.begin(), scene.lights.end(),
                                        [&](const scene::Light& l) { return l.name == entry.first; });
-        if (!found) throw std::runtime_error("--light-occlusion: " + scene.source + " has no light named '" +
+        if (!found) throw std::runtime_error("light-occlusion: " + scene.source + " has no light named '" +
                                              entry.first + "'");
     }
     const uint32_t iw = settings.width * settings.supersample, ih = settings.height * settings.supersample;
     const uint32_t maxDim = ctx.properties.limits.maxImageDimension2D;
     if (iw > maxDim || ih > maxDim)
-        throw std::runtime_error("--width/--height x --supersample: the internal image " + std::to_string(iw) + "x" +
-                                 std::to_string(ih) + " exceeds " + ctx.deviceName + "'s limit of " +
+        throw std::runtime_error("supersample: the internal image " + std::to_string(iw) + "x" + std::to_string(ih) +
+                                 " (width and height x supersample) exceeds " + ctx.deviceName + "'s limit of " +
                                  std::to_string(maxDim) + " pixels per side");
     // Textures larger than the device allows are box-filtered down (with a warning).
     scene::limitTextureSize(scene_, maxDim, &warnings_);
@@ -95,7 +95,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     if (settings.voxels == 0) {
         // The lighting pass always binds voxel volumes; without voxels it gets
         // small empty ones that nothing writes.
-        if (settings.shadowCones.enabled) throw std::runtime_error("--shadows cone needs voxels (--voxels > 0)");
+        if (settings.shadowCones.enabled) throw std::runtime_error("shadows: cone needs voxels (voxels > 0)");
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, vxgi::fitGrid(sceneGpu_->bounds, 8));
     } else {
         const vxgi::GridSpec grid =
@@ -110,7 +110,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     }
     for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
     if (settings.voxels == 0 && settings.view.mode != ViewMode::Final)
-        throw std::runtime_error("--view: the voxel views need voxels (--voxels 0 turns them off)");
+        throw std::runtime_error("view: the voxel views need voxels (voxels 0 turns them off)");
     updateFrameConstants();
 }
 

@@ -60,9 +60,9 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n) {
 VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g), directionalMips(directionalMipCount(g.n)) {
     const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
     if (g.n < 8 || (g.n & (g.n - 1)) != 0)
-        throw std::runtime_error("--voxels: " + std::to_string(g.n) + " is not a power of two of at least 8");
+        throw std::runtime_error("voxels: " + std::to_string(g.n) + " is not a power of two of at least 8");
     if (uint64_t(g.n) * sh::VOXEL_CHANNELS > limits.maxImageDimension3D)
-        throw std::runtime_error("--voxels: " + std::to_string(g.n) + "^3 needs 3D images of depth " +
+        throw std::runtime_error("voxels: " + std::to_string(g.n) + "^3 needs 3D images of depth " +
                                  std::to_string(g.n * sh::VOXEL_CHANNELS) + " but " + ctx.deviceName +
                                  " allows " + std::to_string(limits.maxImageDimension3D));
     if (!ctx.features.atomicFloat)

@@ -61,7 +61,10 @@ dev = j.get("device", {})
 check("quick: device and driver recorded", bool(dev.get("name")) and "driver_name" in dev, str(dev))
 check("quick: date and command line", bool(j.get("date")) and "--bench-quick" in j.get("command_line", ""))
 s = j.get("settings", {})
-check("quick: 160x90, 2 frames", s.get("width") == 160 and s.get("height") == 90 and s.get("frames") == 2, str(s))
+check("quick: 160x90, 2 frames", s.get("width") == 160 and s.get("height") == 90 and s.get("bench-frames") == 2
+      and s.get("bench-voxels") == [32], str(s))
+check("quick: every bench setting recorded by its flag name",
+      all(k in s for k in ("voxels", "cone-step", "bounces", "shadow-map", "bench-quick", "validate")), str(s))
 check("quick: no validation errors", j.get("validation_errors") == 0, str(j.get("validation_errors")))
 
 # 2. A shared folder without the scenes: skipped with a warning naming the file.

@@ -55,15 +55,15 @@ TEST(Cli, Defaults) {
     EXPECT_EQ(o.scene, "");
     EXPECT_EQ(o.outExr, "out/render.exr");
     EXPECT_EQ(o.outPng, "");
-    EXPECT_EQ(o.width, 512u);
-    EXPECT_EQ(o.height, 512u);
-    EXPECT_EQ(o.camera, 0);
+    EXPECT_EQ(o.settings.width, 512u);
+    EXPECT_EQ(o.settings.height, 512u);
+    EXPECT_EQ(o.settings.camera, 0);
     EXPECT_EQ(o.exposure, 0.0f);
     EXPECT_EQ(o.metricsPath, "");
     EXPECT_EQ(o.device, "");
     EXPECT_FALSE(o.validate);
-    EXPECT_EQ(o.shadowMapSize, 2048u);
-    EXPECT_EQ(o.supersample, 1u);
+    EXPECT_EQ(o.settings.shadowMapSize, 2048u);
+    EXPECT_EQ(o.settings.supersample, 1u);
     EXPECT_FALSE(o.quiet);
 }
 
@@ -79,12 +79,12 @@ TEST(Cli, Commands) {
         EXPECT_TRUE(parse({cmd}).error.empty()) << cmd;
 }
 
-TEST(Cli, ViewAndBenchTakeTheSameOptions) {
-    for (auto* cmd : {"view", "bench"}) {
+TEST(Cli, EveryCommandTakesTheSharedOptions) {
+    for (auto* cmd : {"render", "view", "bench"}) {
         const ParseResult r = parse({cmd, "scene.gltf", "--width", "64", "--quiet"});
         ASSERT_TRUE(r.error.empty()) << r.error;
         EXPECT_EQ(r.render.scene, "scene.gltf");
-        EXPECT_EQ(r.render.width, 64u);
+        EXPECT_EQ(r.render.settings.width, 64u);
         EXPECT_TRUE(r.render.quiet);
     }
 }
@@ -122,8 +122,8 @@ TEST(Cli, ScenePositional) {
     r = parse({"render", "--width", "8", "a.gltf", "--height", "4"});
     ASSERT_TRUE(r.error.empty()) << r.error;
     EXPECT_EQ(r.render.scene, "a.gltf");
-    EXPECT_EQ(r.render.width, 8u);
-    EXPECT_EQ(r.render.height, 4u);
+    EXPECT_EQ(r.render.settings.width, 8u);
+    EXPECT_EQ(r.render.settings.height, 4u);
 
     expectError({"render", "a.gltf", "b.gltf"},
                 "unexpected argument 'b.gltf' (scene already given as 'a.gltf')");
@@ -162,7 +162,7 @@ TEST(Cli, WidthAndHeight) {
         for (auto [text, value] : {std::pair{"1", 1u}, {"640", 640u}, {"16384", 16384u}}) {
             const ParseResult r = parseBoth(opt, text);
             ASSERT_TRUE(r.error.empty()) << r.error;
-            EXPECT_EQ(std::string(opt) == "--width" ? r.render.width : r.render.height, value);
+            EXPECT_EQ(std::string(opt) == "--width" ? r.render.settings.width : r.render.settings.height, value);
         }
         for (auto* bad : {"abc", "0", "16385", "-5", "12x", "1.5", "+5", " 5", "0x10",
                           "99999999999999999999999"})
@@ -177,8 +177,8 @@ TEST(Cli, WidthAndHeight) {
 TEST(Cli, Camera) {
     ParseResult r = parseBoth("--camera", "3");
     ASSERT_TRUE(r.error.empty()) << r.error;
-    EXPECT_EQ(r.render.camera, 3);
-    EXPECT_EQ(parse({"render", "--camera=0"}).render.camera, 0);
+    EXPECT_EQ(r.render.settings.camera, 3);
+    EXPECT_EQ(parse({"render", "--camera=0"}).render.settings.camera, 0);
     for (auto* bad : {"-1", "one", "2147483648", "1e2"})
         expectBadValue("--camera", bad, "an integer >= 0");
     expectError({"render", "--camera"}, "--camera: missing value");
@@ -227,7 +227,7 @@ TEST(Cli, ShadowMap) {
     for (auto [text, value] : {std::pair{"256", 256u}, {"1024", 1024u}, {"8192", 8192u}}) {
         const ParseResult r = parseBoth("--shadow-map", text);
         ASSERT_TRUE(r.error.empty()) << r.error;
-        EXPECT_EQ(r.render.shadowMapSize, value);
+        EXPECT_EQ(r.render.settings.shadowMapSize, value);
     }
     for (auto* bad : {"1000", "128", "16384", "0", "big", "-1024"})
         expectBadValue("--shadow-map", bad, "a power of two in 256..8192");
@@ -238,7 +238,7 @@ TEST(Cli, Supersample) {
     for (auto [text, value] : {std::pair{"1", 1u}, {"4", 4u}, {"8", 8u}}) {
         const ParseResult r = parseBoth("--supersample", text);
         ASSERT_TRUE(r.error.empty()) << r.error;
-        EXPECT_EQ(r.render.supersample, value);
+        EXPECT_EQ(r.render.settings.supersample, value);
     }
     for (auto* bad : {"0", "9", "2.0", "x"})
         expectBadValue("--supersample", bad, "an integer in 1..8");
@@ -255,22 +255,22 @@ TEST(Cli, EverythingTogether) {
     EXPECT_EQ(o.scene, "s.gltf");
     EXPECT_EQ(o.outExr, "o/f.exr");
     EXPECT_EQ(o.outPng, "none");
-    EXPECT_EQ(o.width, 320u);
-    EXPECT_EQ(o.height, 200u);
-    EXPECT_EQ(o.camera, 1);
+    EXPECT_EQ(o.settings.width, 320u);
+    EXPECT_EQ(o.settings.height, 200u);
+    EXPECT_EQ(o.settings.camera, 1);
     EXPECT_EQ(o.exposure, -1.5f);
     EXPECT_EQ(o.metricsPath, "m.json");
     EXPECT_EQ(o.device, "lavapipe");
     EXPECT_TRUE(o.validate);
-    EXPECT_EQ(o.shadowMapSize, 4096u);
-    EXPECT_EQ(o.supersample, 2u);
+    EXPECT_EQ(o.settings.shadowMapSize, 4096u);
+    EXPECT_EQ(o.settings.supersample, 2u);
     EXPECT_TRUE(o.quiet);
 }
 
 TEST(Cli, LaterOptionWins) {
     const ParseResult r = parse({"render", "--width", "10", "--width=20"});
     ASSERT_TRUE(r.error.empty()) << r.error;
-    EXPECT_EQ(r.render.width, 20u);
+    EXPECT_EQ(r.render.settings.width, 20u);
 }
 
 TEST(Cli, UsageDocumentsEveryOption) {
@@ -284,11 +284,11 @@ TEST(Cli, UsageDocumentsEveryOption) {
 }
 
 TEST(Cli, ConeClearance) {
-    EXPECT_EQ(parse({"render"}).render.coneClearance, 3.0f);
+    EXPECT_EQ(parse({"render"}).render.settings.cones.clearance, 3.0f);
     for (auto [text, value] : {std::pair{"0", 0.0f}, {"2", 2.0f}, {"3.5", 3.5f}, {"8", 8.0f}}) {
         const ParseResult r = parseBoth("--cone-clearance", text);
         ASSERT_TRUE(r.error.empty()) << text << ": " << r.error;
-        EXPECT_EQ(r.render.coneClearance, value) << text;
+        EXPECT_EQ(r.render.settings.cones.clearance, value) << text;
     }
     for (auto* bad : {"-1", "9", "wide", "nan"})
         expectBadValue("--cone-clearance", bad, "a number in 0..8 (0 = off)");
