@@ -87,7 +87,8 @@ check(bool((albedo[..., 0] > albedo[..., 1] + 0.3).any() and (albedo[..., 1] > a
       "albedo shows the red and the green wall")
 n = np.stack([ch["normal." + c] for c in "XYZ"], axis=-1)
 length = np.linalg.norm(n, axis=-1)
-check(float(np.median(np.abs(length - 1))) < 1e-3, "normals are unit length (median)")
+nm = float(np.median(np.abs(length - 1)))
+check(nm < 1e-3, "normals are unit length (median |length - 1| %.3g)" % nm)
 depth = ch["depth.Z"]
 finite = depth[np.isfinite(depth)]
 check(finite.size > 0.9 * depth.size and float(finite.min()) > 0 and float(finite.max()) < 100,
@@ -98,7 +99,8 @@ render("--exr-type half", "--exr-type", "half", "--out", half)
 hch, hfmt = read(half)
 check(set(hfmt.values()) == {"half"}, "--exr-type half stores half channels: %s" % hfmt)
 hr = rgb(hch)
-check(float(np.abs(hr - f).max()) <= 1e-3 * float(np.abs(f).max()), "the half image matches the float one")
+hd = float(np.abs(hr - f).max()) / float(np.abs(f).max())
+check(hd <= 1e-3, "the half image matches the float one (max difference %.3g of the maximum)" % hd)
 
 # Supersampled: the G-buffer layers are box-averaged from the 2x internal size;
 # --exr-type half applies to the AOV file too.
@@ -112,7 +114,8 @@ parts2 = rgb(ch2, "direct") + rgb(ch2, "indirect") + rgb(ch2, "specular")
 e2 = float(np.sqrt(np.mean((parts2 - f2) ** 2)) / np.sqrt(np.mean(f2 ** 2)))
 check(e2 < 2e-3, "supersampled: direct + indirect + specular = --out within half precision (%.3g)" % e2)
 n2 = np.stack([ch2["normal." + c] for c in "XYZ"], axis=-1)
-check(float(np.median(np.abs(np.linalg.norm(n2, axis=-1) - 1))) < 2e-3, "supersampled normals unit length")
+nm2 = float(np.median(np.abs(np.linalg.norm(n2, axis=-1) - 1)))
+check(nm2 < 2e-3, "supersampled normals unit length (median |length - 1| %.3g)" % nm2)
 d2 = ch2["depth.Z"][np.isfinite(ch2["depth.Z"])]
 check(d2.size > 0 and abs(float(np.median(d2)) - float(np.median(finite))) < 0.02 * float(np.median(finite)),
       "supersampled depth agrees with the 1x depth (median %.4f vs %.4f)" % (np.median(d2), np.median(finite)))

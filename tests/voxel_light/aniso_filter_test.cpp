@@ -128,8 +128,9 @@ TEST_F(AnisoFilter, EveryDirectionAndLevelMatchesTheRule) {
         }
         std::printf("  direction %d: worst relative error %.2e per level, %.2e over the host chain\n", dir,
                     worstGpuChain, worstHostChain);
-        // fp16 errors compound over at most 5 levels of averaging.
-        EXPECT_LT(worstHostChain, 5e-3) << "direction " << dir;
+        // fp16 errors compound over at most 5 levels of averaging: measured
+        // worst 1.94e-3 on lavapipe, bound 1.5x.
+        EXPECT_LT(worstHostChain, 3e-3) << "direction " << dir;
     }
     EXPECT_EQ(failed, 0);
 }
