@@ -86,7 +86,8 @@ int compareLevel(const Rgba16Volume& got, const Rgba16Volume& want, int dir, uin
                     const float g = got.at(x, y, z)[c], w = want.at(x, y, z)[c];
                     const float err = std::abs(g - w);
                     if (w > 1e-3f) worst = std::max(worst, double(err / w));
-                    if (err > 2e-3f * std::abs(w) + 1e-6f && failed++ < 3)
+                    // One fp16 rounding: up to 9.8e-4 (measured worst 9.73e-4).
+                    if (err > 1.5e-3f * std::abs(w) + 1e-6f && failed++ < 3)
                         ADD_FAILURE() << "direction " << dir << " level " << level << " voxel (" << x << "," << y
                                       << "," << z << ") channel " << c << ": GPU " << g << ", host " << w;
                 }
