@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -300,6 +301,7 @@ TEST_F(AppDevice, RendersIntoTheApplicationsImage) {
 
     // 2:1 linear blit = the 2x2 average (each sample falls between four texels), in half precision.
     const std::vector<uint8_t> halfBytes = readBack(half, 16, 16, 8);
+    double worstBlit = 0.0;
     for (uint32_t y = 0; y < 16; ++y)
         for (uint32_t x = 0; x < 16; ++x)
             for (uint32_t c = 0; c < 3; ++c) {
@@ -312,8 +314,11 @@ TEST_F(AppDevice, RendersIntoTheApplicationsImage) {
                 const int e = (h >> 10) & 31;
                 const float v = e == 0 ? std::ldexp(float(h & 1023), -24)
                                        : std::ldexp(1.0f + float(h & 1023) / 1024.0f, e - 15);
-                EXPECT_NEAR(v, avg, 2e-3f * std::max(avg, 1e-3f) + 1e-6f) << "blit pixel " << x << "," << y;
+                if (avg > 1e-3f) worstBlit = std::max(worstBlit, double(std::abs(v - avg) / avg));
+                // Half rounding moves a value by up to 9.8e-4 of it (measured 9.57e-4).
+                EXPECT_NEAR(v, avg, 1.5e-3f * std::max(avg, 1e-3f) + 1e-6f) << "blit pixel " << x << "," << y;
             }
+    std::printf("  2:1 half blit: worst relative error %.2e against the 2x2 average\n", worstBlit);
 }
 
 TEST_F(AppDevice, MatchesARenderOnDvsgisOwnDevice) {
@@ -333,8 +338,11 @@ TEST_F(AppDevice, MatchesARenderOnDvsgisOwnDevice) {
         own = renderer.readImage();
         EXPECT_EQ(renderer.validationErrors(), 0u);
     }
-    // Float atomics in voxelization may add in another order: not bit-exact.
-    EXPECT_LT(relRmse(app.rgba, own.rgba), 1e-4);
+    // Float atomics in voxelization may add in another order: not bit-exact on
+    // a GPU (lavapipe gives 0; the bound is for that reordering, unmeasured).
+    const double e = relRmse(app.rgba, own.rgba);
+    std::printf("  application's device against dvsgi's: relative RMSE %.2e\n", e);
+    EXPECT_LT(e, 1e-4);
 }
 
 TEST_F(AppDevice, ErrorsNameTheSetting) {

@@ -87,7 +87,8 @@ check(bool((albedo[..., 0] > albedo[..., 1] + 0.3).any() and (albedo[..., 1] > a
       "albedo shows the red and the green wall")
 n = np.stack([ch["normal." + c] for c in "XYZ"], axis=-1)
 length = np.linalg.norm(n, axis=-1)
-check(float(np.median(np.abs(length - 1))) < 1e-3, "normals are unit length (median)")
+nm = float(np.median(np.abs(length - 1)))
+check(nm < 1e-3, "normals are unit length (median |length - 1| %.3g)" % nm)
 depth = ch["depth.Z"]
 finite = depth[np.isfinite(depth)]
 check(finite.size > 0.9 * depth.size and float(finite.min()) > 0 and float(finite.max()) < 100,
@@ -98,7 +99,9 @@ render("--exr-type half", "--exr-type", "half", "--out", half)
 hch, hfmt = read(half)
 check(set(hfmt.values()) == {"half"}, "--exr-type half stores half channels: %s" % hfmt)
 hr = rgb(hch)
-check(float(np.abs(hr - f).max()) <= 1e-3 * float(np.abs(f).max()), "the half image matches the float one")
+# One rounding to half moves a value by at most 2^-11 of it (measured 3.35e-4 of the maximum).
+hd = float(np.abs(hr - f).max()) / float(np.abs(f).max())
+check(hd <= 5e-4, "the half image matches the float one (max difference %.3g of the maximum)" % hd)
 
 # Supersampled: the G-buffer layers are box-averaged from the 2x internal size;
 # --exr-type half applies to the AOV file too.
@@ -109,13 +112,16 @@ check(set(ch2) == want and set(fmt2.values()) == {"half"}, "supersampled AOV: se
 check(ch2["depth.Z"].shape == (32, 32), "supersampled AOV at output size 32x32")
 f2 = rgb(read(full2)[0])
 parts2 = rgb(ch2, "direct") + rgb(ch2, "indirect") + rgb(ch2, "specular")
+# Each of the four half-precision images is rounded once: measured 2.58e-4, bound 1.5x.
 e2 = float(np.sqrt(np.mean((parts2 - f2) ** 2)) / np.sqrt(np.mean(f2 ** 2)))
-check(e2 < 2e-3, "supersampled: direct + indirect + specular = --out within half precision (%.3g)" % e2)
+check(e2 < 4e-4, "supersampled: direct + indirect + specular = --out within half precision (%.3g)" % e2)
 n2 = np.stack([ch2["normal." + c] for c in "XYZ"], axis=-1)
-check(float(np.median(np.abs(np.linalg.norm(n2, axis=-1) - 1))) < 2e-3, "supersampled normals unit length")
+nm2 = float(np.median(np.abs(np.linalg.norm(n2, axis=-1) - 1)))
+check(nm2 < 2e-3, "supersampled normals unit length (median |length - 1| %.3g)" % nm2)
+# Box-averaged depth against the centre samples' (measured 2.32e-4 apart in the median).
 d2 = ch2["depth.Z"][np.isfinite(ch2["depth.Z"])]
-check(d2.size > 0 and abs(float(np.median(d2)) - float(np.median(finite))) < 0.02 * float(np.median(finite)),
-      "supersampled depth agrees with the 1x depth (median %.4f vs %.4f)" % (np.median(d2), np.median(finite)))
+dd = abs(float(np.median(d2)) - float(np.median(finite))) / float(np.median(finite)) if d2.size else 1.0
+check(d2.size > 0 and dd < 3.5e-4, "supersampled depth agrees with the 1x depth (medians %.3g apart)" % dd)
 
 for name, args, needle in (("bad --exr-type", ["--exr-type", "double"], "--exr-type"),
                            ("--aov not .exr", ["--aov", os.path.join(TMP, "a.png")], "--aov"),

@@ -110,6 +110,9 @@ expect_error("missing --add-model", ["render", "--add-model", os.path.join(TMP, 
 # Several frames with an added moving model, every frame written; a voxel view; single terms.
 checks += 3
 bunny = os.path.join(os.path.dirname(__file__), "../../../shared/scenes/stanford-bunny/bun_zipper_res2.ply")
+# Without the shared scenes this check would quietly run without the model: fail instead.
+if not os.path.exists(bunny):
+    failures.append("frames + moving model: %s not found" % bunny)
 model = ["--add-model", bunny] if os.path.exists(bunny) else []
 pattern = os.path.join(TMP, "frame_##.exr")
 rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--frames", "3", "--out", pattern,

@@ -1,5 +1,6 @@
 // Analytic checks of the per-pixel cone tracing and its composition.
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/constants.hpp>
 
@@ -71,8 +72,9 @@ TEST_F(ConeTracing, UniformlyEmissiveEnclosureGivesRhoL) {
         // Measured (outside the grid is empty, 4-voxel margin): means 2.3 % and
         // 5.2 % low for 6 and 16 cones, worst pixels 3.9 % and 6.3 %: light leaks
         // through coarse cells straddling the walls (docs/quality.md). Bounds 1.5x.
-        EXPECT_NEAR(mean, rho * L, 0.08 * rho * L) << "cone set " << cones;
-        EXPECT_LT(maxErr, 0.095) << "cone set " << cones;
+        const bool six = cones == sh::CONE_SET_6;
+        EXPECT_NEAR(mean, rho * L, (six ? 0.035 : 0.078) * rho * L) << "cone set " << cones;
+        EXPECT_LT(maxErr, six ? 0.059 : 0.095) << "cone set " << cones;
     }
 }
 
@@ -108,7 +110,7 @@ TEST_F(ConeTracing, AmbientOcclusionIsOneOnAnOpenPlaneAndFallsTowardAWall) {
                 hi = std::max(hi, red(open, x, y));
             }
         std::printf("open plane AO, %u cones: min %.3f max %.3f\n", cones, lo, hi);
-        EXPECT_GE(lo, 0.98f) << "cone set " << cones;
+        EXPECT_GE(lo, 0.999f) << "cone set " << cones;  // measured 1.000 (fp16 step 4.9e-4)
         EXPECT_LE(hi, 1.0f);
     }
     rs.cones.coneSet = sh::CONE_SET_6;
@@ -124,6 +126,8 @@ TEST_F(ConeTracing, AmbientOcclusionIsOneOnAnOpenPlaneAndFallsTowardAWall) {
         if (ao < previous - 1e-3f) ++decreasing;
         previous = ao;
     }
+    std::printf("AO along the row toward the wall: %.3f at x = 8, %.3f at x = 23\n", red(walled, 8, 16),
+                red(walled, 23, 16));
     EXPECT_LT(red(walled, 23, 16), red(walled, 8, 16) - 0.05f) << "AO next to the wall should be lower";
     EXPECT_GE(decreasing, 5) << "AO should fall steadily toward the wall";
 }
@@ -155,7 +159,8 @@ TEST_F(ConeTracing, LoneLitPlaneGetsNoIndirectLight) {
         std::printf("clearance %.1f: direct %.4f, indirect %.4f (%.2f %%)\n", clearance, direct, indirect,
                     100.0 * indirect / direct);
         ASSERT_GT(direct, 0.1);
-        EXPECT_LT(indirect, (clearance >= 3.0f ? 0.01 : 0.2) * direct) << "clearance " << clearance;
+        // Measured: 0.00 % with K = 3, 1.37 % with K = 2.
+        EXPECT_LT(indirect, (clearance >= 3.0f ? 1e-3 : 0.021) * direct) << "clearance " << clearance;
     }
 }
 
@@ -182,7 +187,7 @@ TEST_F(ConeTracing, WiderShadowConeGivesWiderPenumbra) {
     }
     std::printf("penumbra pixels: %d at %.0f deg, %d at %.0f deg\n", penumbra[0], apertures[0], penumbra[1],
                 apertures[1]);
-    EXPECT_GT(penumbra[1], penumbra[0] + 20);
+    EXPECT_GT(penumbra[1], 3.4 * penumbra[0]);  // measured 322 against 62 (5.2x)
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Analytic checks of the deferred direct-lighting path (shadow maps, G-buffer,
 // lighting, composite) on programmatic scenes, with validation on.
 #include <cmath>
+#include <cstdio>
 
 #include <glm/gtc/constants.hpp>
 
@@ -16,8 +17,15 @@ glm::vec3 pixel(const image::ImageRGBA32F& img, uint32_t x, uint32_t y) {
     return {p[0], p[1], p[2]};
 }
 
+// The worst relative error expectNear saw in the current test (where the
+// expected value is above its absolute floor), printed for the tolerance table.
+double gWorstRel = 0.0;
+
 void expectNear(glm::vec3 got, glm::vec3 want, float relTol, const char* what, uint32_t x, uint32_t y,
                 float absTol = 1e-6f) {
+    for (int c = 0; c < 3; ++c)
+        if (std::abs(want[c]) > absTol)
+            gWorstRel = std::max(gWorstRel, double(std::abs(got[c] - want[c]) / std::abs(want[c])));
     for (int c = 0; c < 3; ++c)
         ASSERT_NEAR(got[c], want[c], std::max(relTol * std::abs(want[c]), absTol))
             << what << " at pixel (" << x << ", " << y << ") channel " << c;
@@ -48,7 +56,20 @@ render::RenderSettings settings(uint32_t size) {
     return s;
 }
 
-class DirectLighting : public GpuTest {};
+// Tolerances are about 1.5x the worst error measured on lavapipe (printed per
+// test; table in docs/RELIABILITY.md), which comes from fp16 normals in the
+// G-buffer; values that are exact there have float-rounding bounds.
+class DirectLighting : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        gWorstRel = 0.0;
+    }
+    void TearDown() override {
+        std::printf("  worst relative error against the closed form: %.2e\n", gWorstRel);
+        GpuTest::TearDown();
+    }
+};
 
 TEST_F(DirectLighting, LambertPlaneUnderDirectionalLightIsRhoEOverPi) {
     for (float incidenceDeg : {0.0f, 60.0f}) {
@@ -62,7 +83,7 @@ TEST_F(DirectLighting, LambertPlaneUnderDirectionalLightIsRhoEOverPi) {
         const image::ImageRGBA32F img = render(s, rs);
         const glm::vec3 want = rho * 2.0f * std::cos(a) / kPi;
         for (uint32_t y = 0; y < rs.height; ++y)
-            for (uint32_t x = 0; x < rs.width; ++x) expectNear(pixel(img, x, y), want, 0.005f, "directional", x, y);
+            for (uint32_t x = 0; x < rs.width; ++x) expectNear(pixel(img, x, y), want, 4e-4f, "directional", x, y);
     }
 }
 
@@ -82,7 +103,7 @@ TEST_F(DirectLighting, PointLightFollowsInverseSquareAndCosine) {
             const glm::vec3 toLight = lp - P;
             const float d2 = glm::dot(toLight, toLight);
             const float cosTheta = toLight.y / std::sqrt(d2);
-            expectNear(pixel(img, x, y), rho * I * cosTheta / (kPi * d2), 0.01f, "point", x, y);
+            expectNear(pixel(img, x, y), rho * I * cosTheta / (kPi * d2), 1.1e-3f, "point", x, y);
         }
 }
 
@@ -118,7 +139,7 @@ TEST_F(DirectLighting, SpotLightUsesSquaredGltfFalloff) {
             inside += t == 1.0f;
             penumbra += t > 0.0f && t < 1.0f;
             // At the cone's outer edge t^2 -> 0 and the value is ~1e-6: keep an absolute floor there.
-            expectNear(got, want, 0.01f, "spot", x, y, 1e-4f * 5.0f * 0.5f / kPi);
+            expectNear(got, want, 5e-3f, "spot", x, y, 1e-4f * 5.0f * 0.5f / kPi);
         }
     EXPECT_GT(inside, 100);
     EXPECT_GT(penumbra, 100);
@@ -153,10 +174,13 @@ TEST_F(DirectLighting, OccluderCastsShadowForEveryLightType) {
             return rho * 2.0f * (toLight.y / std::sqrt(d2)) / (kPi * d2);
         };
         const glm::vec3 inShadow = pixel(img, 32, 32);
-        EXPECT_LT(inShadow.x, 0.01f * unshadowed(pixelOnPlane(s, rs, 32, 32, 0.0f)).x) << "centre should be shadowed";
+        std::printf("  light type %d: shadowed centre %.3e of the unshadowed value\n", int(type),
+                    inShadow.x / unshadowed(pixelOnPlane(s, rs, 32, 32, 0.0f)).x);
+        // Deep inside the shadow every filter tap of the map is occluded.
+        EXPECT_EQ(inShadow.x, 0.0f) << "centre should be shadowed";
         // A lit probe on the far side of the shadow.
         const uint32_t px = 50, py = 20;
-        expectNear(pixel(img, px, py), unshadowed(pixelOnPlane(s, rs, px, py, 0.0f)), 0.01f, "lit probe", px, py);
+        expectNear(pixel(img, px, py), unshadowed(pixelOnPlane(s, rs, px, py, 0.0f)), 4e-4f, "lit probe", px, py);
     }
 }
 
@@ -170,7 +194,10 @@ TEST_F(DirectLighting, EmissionIsOneSidedUnlessDoubleSided) {
                 c.flipped ? flip : glm::quat(1, 0, 0, 0));
         addTopDownCamera(s, 2.0f, glm::radians(40.0f));
         const image::ImageRGBA32F img = render(s, settings(16));
-        EXPECT_NEAR(pixel(img, 8, 8).x, c.expectRed, 1e-3f) << "flipped " << c.flipped << " doubleSided " << c.doubleSided;
+        std::printf("  flipped %d doubleSided %d: %.7f (expected %.1f)\n", c.flipped, c.doubleSided, pixel(img, 8, 8).x,
+                    c.expectRed);
+        // 3.0 is exact in fp16 (the G-buffer's emission) and nothing else adds light.
+        EXPECT_NEAR(pixel(img, 8, 8).x, c.expectRed, 1e-6f) << "flipped " << c.flipped << " doubleSided " << c.doubleSided;
     }
 }
 
@@ -183,7 +210,7 @@ TEST_F(DirectLighting, BackgroundIsBlackAndLightsAdd) {
     addLight(s, directional(2.0f, glm::vec3(0, 0, 1)), glm::vec3(0, 5, 0), glm::vec3(0, -1, 0));
     const image::ImageRGBA32F img = render(s, settings(32));
     expectNear(pixel(img, 0, 0), glm::vec3(0.0f), 0.0f, "background", 0, 0);
-    expectNear(pixel(img, 16, 16), rho * glm::vec3(1.0f, 0.0f, 2.0f) / kPi, 0.005f, "sum of lights", 16, 16);
+    expectNear(pixel(img, 16, 16), rho * glm::vec3(1.0f, 0.0f, 2.0f) / kPi, 1e-5f, "sum of lights", 16, 16);
 }
 
 // The composite pass box-filters k x k internal pixels into one output pixel.
@@ -199,7 +226,7 @@ TEST_F(DirectLighting, SupersamplingIsTheBoxAverageOfTheFineImage) {
         for (uint32_t x = 0; x < 32; ++x) {
             const glm::vec3 avg = (pixel(a, 2 * x, 2 * y) + pixel(a, 2 * x + 1, 2 * y) + pixel(a, 2 * x, 2 * y + 1) +
                                    pixel(a, 2 * x + 1, 2 * y + 1)) * 0.25f;
-            expectNear(pixel(b, x, y), avg, 1e-4f, "supersample", x, y);
+            expectNear(pixel(b, x, y), avg, 1e-6f, "supersample", x, y);
         }
 }
 

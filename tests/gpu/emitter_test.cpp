@@ -73,8 +73,9 @@ TEST_F(Emitters, SquareEmitterLightsTheFloorAsTheIrradianceIntegral) {
         }
     std::printf("  floor under a square emitter: mean ratio %.4f, worst pixel %.2f%%\n", sumGot / sumWant,
                 100.0 * worst);
-    EXPECT_NEAR(sumGot / sumWant, 1.0, 0.02);
-    EXPECT_LT(worst, 0.05);
+    // Measured on lavapipe: mean -0.09 %, worst pixel 0.18 %; bounds 1.5x.
+    EXPECT_NEAR(sumGot / sumWant, 1.0, 0.0014);
+    EXPECT_LT(worst, 0.0027);
 }
 
 TEST_F(Emitters, EmitterFacingAwayLightsNothing) {

@@ -11,8 +11,9 @@ dvsgi, shared = sys.argv[1], sys.argv[2]
 scene = os.path.join(shared, "scenes/cornell-box/cornell-lights.gltf")
 ref = os.path.join(shared, "reference/cornell-box/cornell-lights-direct.exr")
 if not os.path.exists(scene) or not os.path.exists(ref):
-    print("shared scenes/references not found under %s: skipped" % shared)
-    sys.exit(0)
+    # A missing reference is a failure: a check that did not run must not pass.
+    print("FAIL: shared scene or reference not found under %s" % shared)
+    sys.exit(1)
 tmp = tempfile.mkdtemp(prefix="dvsgi-ref-")
 gltf_exr, builtin_exr = os.path.join(tmp, "gltf.exr"), os.path.join(tmp, "builtin.exr")
 for args in ([scene, "--out", gltf_exr], ["--out", builtin_exr]):
@@ -35,12 +36,15 @@ def read(path):
 
 diff = np.abs(read(gltf_exr) - read(builtin_exr)).max()
 print("built-in vs glTF Cornell box: max abs difference %.3g" % diff)
+# Bounds 1.5x the values measured on lavapipe (docs/quality.md,
+# docs/RELIABILITY.md): masked relative RMSE 0.0107, luminance ratio 1.0014,
+# built-in vs glTF 4.95e-5 (the compiled-in constants round differently).
 failures = []
-if rel > 0.05:
-    failures.append("masked rel RMSE %.4f > 0.05" % rel)
-if abs(lum - 1.0) > 0.02:
-    failures.append("mean luminance ratio %.4f off by more than 2 %%" % lum)
-if diff > 1e-4:
+if rel > 0.016:
+    failures.append("masked rel RMSE %.4f > 0.016" % rel)
+if abs(lum - 1.0) > 0.0021:
+    failures.append("mean luminance ratio %.4f off by more than 0.21 %%" % lum)
+if diff > 7.5e-5:
     failures.append("built-in Cornell box differs from the glTF one (%.3g)" % diff)
 print("\n".join("FAIL " + f for f in failures))
 print("%d passed, %d failed" % (3 - len(failures), len(failures)))

@@ -3,13 +3,31 @@
 renders a few frames, writes a screenshot through the application, compares it
 with a headless `dvsgi render` of the same view, and checks a clean exit with
 zero validation errors. Without a display the command must say so in one line.
-Skips the window checks (prints 'skipped') when Xvfb is not installed.
+Without Xvfb, a GLFW build or an X display Python can open, the window checks
+cannot run: the script then exits 77, which ctest reports as a skip (and
+scripts/test.sh counts as a failure), never 0.
 Usage: view_test.py path/to/dvsgi"""
 import ctypes, ctypes.util, os, shutil, struct, subprocess, sys, tempfile, time, zlib
 
 DVSGI = sys.argv[1]
 TMP = tempfile.mkdtemp(prefix="dvsgi-view-")
-passed, failed = 0, []
+passed, failed, skipped = 0, [], []
+SKIP_CODE = 77  # SKIP_RETURN_CODE in tests/view/CMakeLists.txt
+# Bounds (docs/RELIABILITY.md, "Test tolerances"). Screenshots and headless
+# renders run the same passes: measured difference 0 on lavapipe; 1e-4 allows
+# float atomics to add in another order on a GPU. The window's 8-bit pixels
+# against the CPU's sRGB curve: measured 0.033 levels; 0.5 allows every pixel
+# to round the other way. A held key must change the frame: measured 0.20-0.23
+# of mean relative difference, bound 0.1 because the distance moved depends on
+# how long the key is seen held.
+SAME_RENDER = 1e-4
+WINDOW_LEVELS = 0.5
+MOVED = 0.1
+
+
+def skip(reason):
+    print("SKIPPED: " + reason)
+    skipped.append(reason)
 
 
 def check(name, ok, detail=""):
@@ -227,7 +245,7 @@ def drive_window(display, env, args, act, cwd=None):
     try:
         x = X11(display)
     except OSError as e:
-        print("window check skipped: %s" % e)
+        skip("window check: cannot open the X display from Python: %s" % e)
         return None
     proc = subprocess.Popen([DVSGI, "view", *args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             text=True, env=env)
@@ -263,7 +281,7 @@ def window_checks(display, env, common):
         while time.time() < deadline and proc.poll() is None:
             time.sleep(0.5)  # the swapchain and the renderer follow the new size
             best.append(window_difference(x.pixels(win, 200, 150), expected))
-            if best[-1] < 2.0:
+            if best[-1] < WINDOW_LEVELS:
                 break
 
     # No frame limit: the window runs until it is asked to close, as by a user.
@@ -276,11 +294,12 @@ def window_checks(display, env, common):
           rc == 0 and validation_clean(rc, err), "rc=%s %s" % (rc, err[-1000:]))
     b = min(best) if best else None
     print("mean |window - sRGB(headless 200x150)|: %s levels" % ("%.3f" % b if b is not None else "n/a"))
-    check("window shows the frame at the new size (< 2 levels)", b is not None and b < 2.0,
+    check("window shows the frame at the new size (< %g levels)" % WINDOW_LEVELS, b is not None and b < WINDOW_LEVELS,
           "best mean difference %s" % b)
     if os.path.exists(shot):
         d = mean_relative_difference(read_exr(shot), expected)
-        check("screenshot after the resize matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
+        print("screenshot after the resize vs headless: mean relative difference %.6f" % d)
+        check("screenshot after the resize matches headless", d < SAME_RENDER, "mean relative difference %.6f" % d)
     else:
         check("screenshot after the resize written", False)
 
@@ -305,7 +324,7 @@ def interaction_check(display, env, common, name, keysym, what):
     ok = rc == 0 and validation_clean(rc, err) and os.path.exists(shot)
     d = mean_relative_difference(read_exr(shot), read_exr(os.path.join(TMP, "ref.exr"))) if ok else 0.0
     print("%s: mean relative difference to the unmoved view %.4f" % (name, d))
-    check(name, ok and d > 0.02, "rc=%s diff=%.4f (%s) %s" % (rc, d, what, err[-500:]))
+    check(name, ok and d > MOVED, "rc=%s diff=%.4f (%s) %s" % (rc, d, what, err[-500:]))
 
 
 def key_screenshot_check(display, env, common):
@@ -331,7 +350,8 @@ def key_screenshot_check(display, env, common):
           written and rc == 0 and validation_clean(rc, err), "rc=%s %s %s" % (rc, out[-300:], err[-500:]))
     if written:
         d = mean_relative_difference(read_exr(exr), read_exr(os.path.join(TMP, "ref.exr")))
-        check("P key screenshot matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
+        print("P key screenshot vs headless: mean relative difference %.6f" % d)
+        check("P key screenshot matches headless", d < SAME_RENDER, "mean relative difference %.6f" % d)
 
 
 def mean_relative_difference(a, b):
@@ -368,8 +388,7 @@ check("no display: one line, exit non-zero",
 # 2. The window under Xvfb.
 xvfb = shutil.which("Xvfb")
 if not xvfb:
-    print("window checks skipped: Xvfb is not installed (Debian package xvfb)")
-    print("skipped")
+    skip("window checks: Xvfb is not installed (Debian package xvfb)")
 else:
     display = None
     for n in range(99, 140):
@@ -393,8 +412,7 @@ else:
             shot = os.path.join(TMP, "shot.exr")
             rc, out, err = run(["view", *common, "--view-frames", "3", "--screenshot", shot], venv)
             if "no viewer" in err:
-                print("window checks skipped: this dvsgi was built without GLFW")
-                print("skipped")
+                skip("window checks: this dvsgi was built without GLFW")
             else:
                 sys.stdout.write(out)
                 check("view: exit 0", rc == 0, "rc=%d stderr=%r" % (rc, err[-2000:]))
@@ -409,7 +427,7 @@ else:
                 if os.path.exists(shot) and os.path.exists(ref):
                     d = mean_relative_difference(read_exr(shot), read_exr(ref))
                     print("mean relative difference screenshot vs headless: %.6f" % d)
-                    check("screenshot matches headless (< 1 %)", d < 0.01, "mean relative difference %.6f" % d)
+                    check("screenshot matches headless", d < SAME_RENDER, "mean relative difference %.6f" % d)
                 # Vsync off takes another present mode when the surface has one.
                 rc, out, err = run(["view", *common, "--view-frames", "2", "--vsync", "off", "--quiet"], venv)
                 check("view --vsync off: exit 0, no validation errors", rc == 0 and validation_clean(rc, err),
@@ -431,4 +449,6 @@ shutil.rmtree(TMP, ignore_errors=True)
 print("%d passed, %d failed" % (passed, len(failed)))
 for f in failed:
     print("FAILED: " + f)
-sys.exit(1 if failed else 0)
+if failed:
+    sys.exit(1)
+sys.exit(SKIP_CODE if skipped else 0)

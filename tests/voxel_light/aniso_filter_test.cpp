@@ -87,7 +87,8 @@ int compareLevel(const Rgba16Volume& got, const Rgba16Volume& want, int dir, uin
                     const float g = got.at(x, y, z)[c], w = want.at(x, y, z)[c];
                     const float err = std::abs(g - w);
                     if (w > 1e-3f) worst = std::max(worst, double(err / w));
-                    if (err > 2e-3f * std::abs(w) + 1e-6f && failed++ < 3)
+                    // One fp16 rounding: up to 9.8e-4 (measured worst 9.73e-4).
+                    if (err > 1.5e-3f * std::abs(w) + 1e-6f && failed++ < 3)
                         ADD_FAILURE() << "direction " << dir << " level " << level << " voxel (" << x << "," << y
                                       << "," << z << ") channel " << c << ": GPU " << g << ", host " << w;
                 }
@@ -129,8 +130,9 @@ TEST_F(AnisoFilter, EveryDirectionAndLevelMatchesTheRule) {
         }
         std::printf("  direction %d: worst relative error %.2e per level, %.2e over the host chain\n", dir,
                     worstGpuChain, worstHostChain);
-        // fp16 errors compound over at most 5 levels of averaging.
-        EXPECT_LT(worstHostChain, 5e-3) << "direction " << dir;
+        // fp16 errors compound over at most 5 levels of averaging: measured
+        // worst 1.94e-3 on lavapipe, bound 1.5x.
+        EXPECT_LT(worstHostChain, 3e-3) << "direction " << dir;
     }
     EXPECT_EQ(failed, 0);
 }

@@ -281,8 +281,9 @@ struct Mismatches {
     double worstRel = 0.0;
 };
 
-// fp16 keeps 11 significant bits (relative 4.9e-4 per rounding); 2e-3 leaves
-// room for float-vs-double differences in normalize, sqrt and 1/d^2.
+// fp16 keeps 11 significant bits: a rounding moves a value by up to 9.8e-4 of
+// it just above a power of two, and the worst measured error is 9.74e-4; 1.5e-3
+// leaves room for float-vs-double differences in normalize, sqrt and 1/d^2.
 void compare(const Rgba16Volume& gpu, const AccumVolume& accum, const std::vector<SyntheticVoxel>& voxels,
              const std::vector<scene::PlacedLight>& lights, Attenuation mode, bool singleNormalOnly,
              const std::string& what) {
@@ -306,7 +307,7 @@ void compare(const Rgba16Volume& gpu, const AccumVolume& accum, const std::vecto
                 bool ok = got.a == 1.0f;
                 for (int c = 0; c < 3; ++c) {
                     const double err = std::abs(double(got[c]) - want[c]);
-                    ok = ok && err <= 2e-3 * std::abs(want[c]) + 2e-5;
+                    ok = ok && err <= 1.5e-3 * std::abs(want[c]) + 2e-5;
                     if (want[c] > 1e-3) m.worstRel = std::max(m.worstRel, err / want[c]);
                 }
                 if (!ok && m.failed++ < 5)

@@ -75,13 +75,21 @@ TEST_F(RendererUpdate, MovedStaticNodeIsReVoxelizedWithoutStaleVoxels) {
     r.renderFrame();
     const std::vector<float> after = counts(r);
     const double x1 = meanX(blockVoxels(after), 32);
-    EXPECT_NEAR(x1 - x0, 16.0, 0.5) << "the block's voxels should follow it";
+    std::printf("  block voxels' mean x moved by %.4f voxels\n", x1 - x0);
+    // Measured 16.0000 (the same voxel pattern, shifted); 0.1 lets a few boundary
+    // voxels differ between the placements, e.g. under hardware conservative
+    // rasterization.
+    EXPECT_NEAR(x1 - x0, 16.0, 0.1) << "the block's voxels should follow it";
     // Nothing left where the block was: every non-floor voxel is near the new place.
     for (size_t i = 0; i < after.size(); ++i)
-        if (after[i] > 0.0f && floor[i] == 0.0f) ASSERT_GT(double(i % 32), x1 - 5.0) << "stale voxel at index " << i;
+        if (after[i] > 0.0f && floor[i] == 0.0f) {
+            ASSERT_GT(double(i % 32), x1 - 5.0) << "stale voxel at index " << i;
+        }
     // The floor's voxels are all still there.
     for (size_t i = 0; i < after.size(); ++i)
-        if (floor[i] > 0.0f) ASSERT_GT(after[i], 0.0f) << "floor voxel lost at index " << i;
+        if (floor[i] > 0.0f) {
+            ASSERT_GT(after[i], 0.0f) << "floor voxel lost at index " << i;
+        }
 }
 
 // A per-frame change applied to a running Renderer gives the image a new
