@@ -84,9 +84,11 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         float a = clamp(smp.a, 0.0, 1.0);
         float ac = 1.0 - pow(1.0 - min(a, 0.9999), stepLen / d);
         vec3 c = a > 1e-6 ? smp.rgb * (ac / a) : vec3(0.0);
+        // Each step occludes what still gets through it (the transmittance
+        // before it), weighted by its distance: sum_k T_k alpha_k f(r_k).
+        ao += (1.0 - acc.a) * ac / (1.0 + aoLambda * t / s);
         acc.rgb += (1.0 - acc.a) * c;
         acc.a += (1.0 - acc.a) * ac;
-        ao += (1.0 - ao) * ac / (1.0 + aoLambda * t / s);
         t += stepLen;
     }
     return acc;

@@ -6,7 +6,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "gpu_fixture.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
 
 namespace dvsgi::test {
 namespace {
@@ -81,10 +81,15 @@ double meanOcclusion(const render::RenderSettings& rs) {
 
 class AmbientOcclusion : public GpuTest {};
 
+// Measured on lavapipe: 0.94, 0.91 and 0.91 of the closed form for lambda
+// 0.1, 0.5 and 2 (the slab's coarse cells spread its opacity over about one
+// voxel, which the closed form's single distance r does not).
+constexpr double kAbsoluteTolerance = 0.14;
+
 // The falloff's shape: for two lambdas the occlusions' ratio is the closed
 // form's, f_2(r) / f_1(r) summed over the cones, whatever scale the
-// accumulation applies (see the known bug below). Measured on lavapipe: the
-// ratio for lambda 2 over 0.5 is 1.6 % above the closed form's.
+// accumulation applies, and each occlusion against the closed form itself. Measured on lavapipe: the
+// ratio for lambda 2 over 0.5 is 0.5 % below the closed form's.
 TEST_F(AmbientOcclusion, FalloffUnderACeilingFollowsOneOverOnePlusLambdaR) {
     const double opaque = meanOcclusion(settings(0.0f));
     std::printf("lambda 0: occlusion %.4f (closed form 1: the slab stops every cone)\n", opaque);
@@ -101,20 +106,11 @@ TEST_F(AmbientOcclusion, FalloffUnderACeilingFollowsOneOverOnePlusLambdaR) {
     const double ratio = got[2] / got[1], wantRatio = want[2] / want[1];
     std::printf("occlusion(lambda 2) / occlusion(lambda 0.5): %.4f, closed form %.4f (%+.2f %%)\n", ratio, wantRatio,
                 100.0 * (ratio / wantRatio - 1.0));
-    EXPECT_NEAR(ratio / wantRatio, 1.0, 0.025);
+    EXPECT_NEAR(ratio / wantRatio, 1.0, 0.0075);
 
-    // KNOWN BUG (reported, not fixed here: shaders/ belongs to another change):
-    // traceConeAO accumulates occ += (1 - occ) alpha f(r), weighting each step
-    // by the occlusion so far instead of by the transmittance (1 - acc.a). For an
-    // opaque surface reached in one step both give f(r); reached over several
-    // partial steps, the first sums f alpha_k over them and overshoots, more the
-    // smaller the step: measured 28-38 % above the closed form here; with a
-    // 4-voxel slab at lambda 0.5, 0.169 with beta = 0.5 but 0.200 with beta = 0.1.
-    // When the accumulation is fixed this check fails: replace it with
-    // EXPECT_NEAR(got[i] / want[i], 1.0, ...) at the measured error.
-    for (int i = 0; i < 3; ++i)
-        EXPECT_GT(got[i] / want[i], 1.15) << "lambda " << lambdas[i]
-                                          << ": the AO accumulation now matches the closed form; update this test";
+    // traceConeAO weights each step by the transmittance before it, so an
+    // opaque slab reached over several partial steps still gives f(r).
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(got[i] / want[i], 1.0, kAbsoluteTolerance) << "lambda " << lambdas[i];
 }
 
 }  // namespace

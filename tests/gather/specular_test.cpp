@@ -7,7 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "gpu_fixture.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
 
 namespace dvsgi::test {
 namespace {

@@ -8,7 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "gpu_fixture.h"
-#include "shared/gather_data.h"
+#include "shared/composite_pass.h"
 
 namespace dvsgi::test {
 namespace {
