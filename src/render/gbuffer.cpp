@@ -3,7 +3,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "render/scene_gpu.h"
+#include "gpuscene/scene_gpu.h"
 #include "shared/geometry_pass.h"
 
 namespace dvsgi::render {
@@ -84,7 +84,7 @@ void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Scene
     for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
         const sh::DrawPush push{glm::uvec4(i, 0, 0, 0)};
         gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_VERTEX_BIT, push);
-        const DrawRange& r = scene.ranges[i];
+        const gpuscene::DrawRange& r = scene.ranges[i];
         vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
     }
     vkCmdEndRendering(cmd);

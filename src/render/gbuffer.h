@@ -11,9 +11,13 @@ class GpuTimers;
 class Tracker;
 }
 
+namespace dvsgi::gpuscene {
+class SceneGpu;
+}
+
 namespace dvsgi::render {
 
-class SceneGpu;
+using gpuscene::SceneGpu;
 
 class GBufferPass {
 public:

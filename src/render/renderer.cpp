@@ -16,7 +16,7 @@
 #include "render/emitters.h"
 #include "render/gbuffer.h"
 #include "render/lighting.h"
-#include "render/scene_gpu.h"
+#include "gpuscene/scene_gpu.h"
 #include "render/shadows.h"
 #include "shared/bounce_pass.h"
 #include "shared/scene_data.h"
@@ -70,7 +70,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
                                  std::to_string(maxDim) + " pixels per side");
     // Textures larger than the device allows are box-filtered down (with a warning).
     scene::limitTextureSize(scene_, maxDim, &warnings_);
-    sceneGpu_ = std::make_unique<SceneGpu>(ctx, scene);
+    sceneGpu_ = std::make_unique<gpuscene::SceneGpu>(ctx, scene);
     uploadLights();
     frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),
                                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,

@@ -19,6 +19,9 @@
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_light_settings.h"
 
+namespace dvsgi::gpuscene {
+class SceneGpu;
+}
 namespace dvsgi::gpu {
 class Context;
 class Buffer;
@@ -68,7 +71,6 @@ struct MemoryItem {
     uint64_t bytes;
 };
 
-class SceneGpu;
 class ShadowPass;
 class GBufferPass;
 class LightingPass;
@@ -140,7 +142,7 @@ private:
     scene::PlacedCamera camera_;
     std::vector<std::string> warnings_;
     uint32_t lightCount_ = 0, viewCount_ = 0, patchCount_ = 0;
-    std::unique_ptr<SceneGpu> sceneGpu_;
+    std::unique_ptr<gpuscene::SceneGpu> sceneGpu_;
     std::unique_ptr<gpu::Buffer> frame_, lights_, views_;
     std::unique_ptr<FrameTargets> targets_;
     std::unique_ptr<Samplers> samplers_;

@@ -8,7 +8,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "render/scene_gpu.h"
+#include "gpuscene/scene_gpu.h"
 #include "shared/geometry_pass.h"
 #include "shared/scene_data.h"
 
@@ -132,7 +132,7 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         for (bool alpha : {false, true}) {
             gpu::bind(cmd, alpha ? alphaTested_ : opaque_);
             for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-                const DrawRange& r = scene.ranges[i];
+                const gpuscene::DrawRange& r = scene.ranges[i];
                 if (r.alphaTested != alpha) continue;
                 const sh::DrawPush push{glm::uvec4(i, v, 0, 0)};
                 gpu::pushConstants(cmd, opaque_, VK_SHADER_STAGE_VERTEX_BIT, push);

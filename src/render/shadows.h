@@ -15,9 +15,13 @@ class GpuTimers;
 class Tracker;
 }
 
+namespace dvsgi::gpuscene {
+class SceneGpu;
+}
+
 namespace dvsgi::render {
 
-class SceneGpu;
+using gpuscene::SceneGpu;
 
 struct LightSetup {
     std::vector<shader::GpuLight> lights;

@@ -7,7 +7,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include "render/scene_gpu.h"
+#include "gpuscene/scene_gpu.h"
 #include "shared/voxelize_pass.h"
 #include "vxgi/volumes.h"
 
@@ -32,7 +32,7 @@ const uint32_t kClear[] = {
 
 }  // namespace
 
-Voxelizer::Voxelizer(const gpu::Context& ctx, const render::SceneGpu& scene, bool hardwareConservative)
+Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative)
     : ctx_(ctx), hardware_(hardwareConservative && ctx.features.conservativeRaster) {
     gpu::GraphicsDesc g;
     g.vertex = kVert;
@@ -86,7 +86,7 @@ void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
     vkCmdDispatch(cmd, groups, groups, groups);
 }
 
-void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const render::SceneGpu& scene,
+void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                          const VoxelVolumes& v, VoxelizeMode mode, gpu::GpuTimers* timers) const {
     const bool dynamic = mode == VoxelizeMode::Dynamic;
     gpu::GpuTimerScope timer(timers, cmd, dynamic ? "voxelize dynamic" : "voxelize static");
@@ -117,7 +117,7 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const rende
     const float margin = std::ldexp(1.0f, 1 - subPixelBits);
     const uint32_t marginBits = std::bit_cast<uint32_t>(margin);
     for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-        const render::DrawRange& r = scene.ranges[i];
+        const gpuscene::DrawRange& r = scene.ranges[i];
         if (r.dynamic != dynamic) continue;
         const sh::VoxelizePush push{glm::uvec4(i, 0, 0, 0),
                                     glm::uvec4(dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC,

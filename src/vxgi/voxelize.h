@@ -8,7 +8,7 @@ namespace dvsgi::gpu {
 class GpuTimers;
 class Tracker;
 }
-namespace dvsgi::render {
+namespace dvsgi::gpuscene {
 class SceneGpu;
 }
 
@@ -22,7 +22,7 @@ class Voxelizer {
 public:
     // hardwareConservative: use VK_EXT_conservative_rasterization instead of
     // the geometry-shader dilation (only when the device has it).
-    Voxelizer(const gpu::Context& ctx, const render::SceneGpu& scene, bool hardwareConservative);
+    Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative);
 
     // Zeroes attributes and flags: the start of a static re-voxelization.
     void clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
@@ -31,7 +31,7 @@ public:
     void clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                       gpu::GpuTimers* timers) const;
     // Voxelizes the static or the dynamic draws of the scene.
-    void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const render::SceneGpu& scene,
+    void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
     bool hardwareConservative() const { return hardware_; }
 

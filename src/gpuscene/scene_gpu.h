@@ -9,7 +9,7 @@
 #include "gpu/texture_table.h"
 #include "scene/scene.h"
 
-namespace dvsgi::render {
+namespace dvsgi::gpuscene {
 
 struct DrawRange {
     uint32_t firstIndex;
@@ -43,4 +43,4 @@ private:
     std::vector<DrawRange> primitiveRanges_;  // per scene primitive
 };
 
-}  // namespace dvsgi::render
+}  // namespace dvsgi::gpuscene

@@ -1,4 +1,4 @@
-#include "render/scene_gpu.h"
+#include "gpuscene/scene_gpu.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -9,7 +9,7 @@
 #include "shared/geometry_pass.h"
 #include "shared/scene_data.h"
 
-namespace dvsgi::render {
+namespace dvsgi::gpuscene {
 
 namespace {
 
@@ -136,4 +136,4 @@ void SceneGpu::updateDraws(const gpu::Context& ctx, const scene::Scene& scene,
     bounds = scene::worldBounds(scene, items);
 }
 
-}  // namespace dvsgi::render
+}  // namespace dvsgi::gpuscene
