@@ -3,7 +3,7 @@
 # it for SECONDS with a corpus seeded from tests/corpus/generate.py and the
 # small files of ../shared. Usage:
 #
-#   scripts/fuzz.sh fuzz_gltf|fuzz_objply|fuzz_image SECONDS [extra libFuzzer flags]
+#   scripts/fuzz.sh fuzz_gltf|fuzz_objply|fuzz_image|fuzz_exr SECONDS [extra libFuzzer flags]
 #
 # The growing corpus stays in build-fuzz/corpus/TARGET, crashing inputs land
 # in build-fuzz/artifacts/TARGET/, the log in build-fuzz/logs/TARGET.log.
@@ -11,7 +11,7 @@
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
-    echo "usage: scripts/fuzz.sh fuzz_gltf|fuzz_objply|fuzz_image SECONDS [libFuzzer flags]" >&2
+    echo "usage: scripts/fuzz.sh fuzz_gltf|fuzz_objply|fuzz_image|fuzz_exr SECONDS [libFuzzer flags]" >&2
     exit 2
 fi
 target=$1
@@ -21,7 +21,8 @@ case "$target" in
     fuzz_gltf) patterns=("*.gltf" "*.glb") ;;
     fuzz_objply) patterns=("*.obj" "*.ply") ;;
     fuzz_image) patterns=("*.png" "*.jpg" "*.jpeg" "*.bmp" "*.tga") ;;
-    *) echo "fuzz.sh: unknown target '$target' (fuzz_gltf, fuzz_objply or fuzz_image)" >&2; exit 2 ;;
+    fuzz_exr) patterns=() ;;
+    *) echo "fuzz.sh: unknown target '$target' (fuzz_gltf, fuzz_objply, fuzz_image or fuzz_exr)" >&2; exit 2 ;;
 esac
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -36,15 +37,20 @@ fi
 nice -n 10 cmake --build "$build" -j1 --target "$target"
 
 # Seeds: every matching file of a freshly generated corpus (for images, the
-# external texture files), plus the small files of the shared scenes.
+# external texture files), plus the small files of the shared scenes. EXR
+# seeds come from the project's own writer instead (float, half, layers).
 seeds=$build/seeds/$target
 rm -rf "$seeds" "$build/seeds/cases"
 mkdir -p "$seeds" "$build/corpus/$target" "$build/artifacts/$target" "$build/logs"
+if [[ $target == fuzz_exr ]]; then
+    nice -n 10 cmake --build "$build" -j1 --target exr_seeds
+    "$build/fuzz/exr_seeds" "$seeds"
+fi
 # The system python carries the OpenImageIO bindings the generator uses for JPEG.
 py=/usr/bin/python3
 [[ -x $py ]] || py=python3
 "$py" "$root/tests/corpus/generate.py" "$build/seeds/cases" >/dev/null
-n=0
+n=$(find "$seeds" -type f | wc -l)
 for p in "${patterns[@]}"; do
     while IFS= read -r -d '' f; do
         size=$(stat -c %s "$f")

@@ -72,6 +72,15 @@ bool hasLayer(const char* name) {
                        [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
 }
 
+bool layerHasExtension(const char* layer, const char* name) {
+    uint32_t n = 0;
+    vkEnumerateInstanceExtensionProperties(layer, &n, nullptr);
+    std::vector<VkExtensionProperties> exts(n);
+    vkEnumerateInstanceExtensionProperties(layer, &n, exts.data());
+    return std::any_of(exts.begin(), exts.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 bool hasDeviceExtension(VkPhysicalDevice pd, const char* name) {
     uint32_t n = 0;
     vkEnumerateDeviceExtensionProperties(pd, nullptr, &n, nullptr);
@@ -148,6 +157,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::debugCallback(VkDebugUtilsMessageSeverit
         self->errors_++;
     else
         self->warnings_++;
+    if (error && data->pMessageIdName && std::strncmp(data->pMessageIdName, "SYNC-", 5) == 0) self->hazards_++;
     std::lock_guard<std::mutex> lock(g_messageMutex);
     if (self->messages_.size() < 64) self->messages_.push_back(data->pMessage ? data->pMessage : "");
     std::fprintf(stderr, "[validation %s] %s\n", error ? "error" : "warning", data->pMessage ? data->pMessage : "");
@@ -164,6 +174,11 @@ Context::Context(const ContextOptions& options) {
                            "(Debian package vulkan-validationlayers)", VK_ERROR_LAYER_NOT_PRESENT);
         layers.push_back(kValidation);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        // The layer implements VK_EXT_validation_features itself; a layer too
+        // old for it validates without the synchronization checks.
+        syncValidation_ = options.syncValidation &&
+                          layerHasExtension(kValidation, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+        if (syncValidation_) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
 
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -180,6 +195,14 @@ Context::Context(const ContextOptions& options) {
     ici.enabledExtensionCount = uint32_t(extensions.size());
     ici.ppEnabledExtensionNames = extensions.data();
     if (options.validation) ici.pNext = &messengerInfo;  // also catches instance creation issues
+    const VkValidationFeatureEnableEXT syncFeature = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT validationFeatures{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    validationFeatures.enabledValidationFeatureCount = 1;
+    validationFeatures.pEnabledValidationFeatures = &syncFeature;
+    if (syncValidation_) {
+        validationFeatures.pNext = ici.pNext;
+        ici.pNext = &validationFeatures;
+    }
     VkResult r = vkCreateInstance(&ici, nullptr, &instance);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw GpuError("no Vulkan 1.3 driver found (install mesa-vulkan-drivers for the software driver)", r);
@@ -336,6 +359,15 @@ void Context::finishSetup(const ContextOptions& options) {
         throw GpuError(deviceName + ": VK_KHR_push_descriptor is not enabled on the device",
                        VK_ERROR_EXTENSION_NOT_PRESENT);
 
+    if (messenger_) {
+        setObjectName_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+            vkGetInstanceProcAddr(instance, "vkSetDebugUtilsObjectNameEXT"));
+        beginLabel_ = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(instance, "vkCmdBeginDebugUtilsLabelEXT"));
+        endLabel_ = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+            vkGetInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
+    }
+
     VkCommandPoolCreateInfo cpi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     cpi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     cpi.queueFamilyIndex = queueFamily;
@@ -343,7 +375,7 @@ void Context::finishSetup(const ContextOptions& options) {
 
     if (options.printDevice)
         std::printf("device: %s (%s)%s\n", deviceName.c_str(), typeName(properties.deviceType),
-                    messenger_ ? ", validation on" : "");
+                    !messenger_ ? "" : syncValidation_ ? ", validation on (with synchronization)" : ", validation on");
 }
 
 void Context::createMessenger() {
@@ -371,6 +403,26 @@ Context::~Context() {
         destroy(instance, messenger_, nullptr);
     }
     if (instance && ownsDevice_) vkDestroyInstance(instance, nullptr);
+}
+
+void Context::nameObject(VkObjectType type, uint64_t handle, const char* name) const {
+    if (!setObjectName_ || !handle) return;
+    VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+    info.objectType = type;
+    info.objectHandle = handle;
+    info.pObjectName = name;
+    setObjectName_(device, &info);
+}
+
+void Context::beginLabel(VkCommandBuffer cmd, const char* name) const {
+    if (!beginLabel_ || !endLabel_) return;
+    VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+    label.pLabelName = name;
+    beginLabel_(cmd, &label);
+}
+
+void Context::endLabel(VkCommandBuffer cmd) const {
+    if (beginLabel_ && endLabel_) endLabel_(cmd);
 }
 
 uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const {

@@ -14,6 +14,10 @@ namespace dvsgi::gpu {
 
 struct ContextOptions {
     bool validation = false;       // Khronos validation layer + message counting
+    // With validation: the layer's synchronization validation as well, so a
+    // missing or too weak barrier is a validation error (SYNC-HAZARD-*) rather
+    // than a race that lavapipe's in-order execution hides.
+    bool syncValidation = true;
     std::string deviceName;        // case-insensitive substring; empty = best
     std::vector<const char*> instanceExtensions;  // e.g. surface extensions
     bool swapchain = false;        // enable VK_KHR_swapchain on the device
@@ -72,8 +76,18 @@ public:
     // apart). Tests assert validationErrors() == 0.
     uint32_t validationErrors() const { return errors_.load(); }
     uint32_t validationWarnings() const { return warnings_.load(); }
+    // The part of validationErrors() that synchronization validation raised.
+    uint32_t syncHazards() const { return hazards_.load(); }
+    bool syncValidationEnabled() const { return syncValidation_; }
     const std::vector<std::string>& validationMessages() const { return messages_; }
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+
+    // With validation on, validation messages show these names and labels
+    // next to the handles, so a hazard names the resource and the pass;
+    // without validation they do nothing.
+    void nameObject(VkObjectType type, uint64_t handle, const char* name) const;
+    void beginLabel(VkCommandBuffer cmd, const char* name) const;
+    void endLabel(VkCommandBuffer cmd) const;
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const;
 
@@ -91,8 +105,13 @@ private:
 
     bool ownsDevice_ = true;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    PFN_vkSetDebugUtilsObjectNameEXT setObjectName_ = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel_ = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT endLabel_ = nullptr;
     std::atomic<uint32_t> errors_{0};
     std::atomic<uint32_t> warnings_{0};
+    std::atomic<uint32_t> hazards_{0};
+    bool syncValidation_ = false;
     std::vector<std::string> messages_;
 
     static VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT,

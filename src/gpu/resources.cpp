@@ -55,6 +55,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
         memory_ = allocate(ctx, req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, name);
     }
     VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
+    ctx.nameObject(VK_OBJECT_TYPE_BUFFER, uint64_t(buffer_), name);
     if (use != MemoryUse::Device) VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
@@ -107,6 +108,7 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device), d
         throw;
     }
     VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+    ctx.nameObject(VK_OBJECT_TYPE_IMAGE, uint64_t(image_), desc.name);
 
     auto makeView = [&](uint32_t baseMip, uint32_t mips, uint32_t baseLayer, uint32_t layers) {
         VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};

@@ -30,10 +30,12 @@ void GpuTimers::begin(VkCommandBuffer cmd, const std::string& name) {
     open_.push_back(used_);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, pool_, used_ * 2);
     ++used_;
+    ctx_.beginLabel(cmd, name.c_str());
 }
 
 void GpuTimers::end(VkCommandBuffer cmd) {
     if (open_.empty()) throw std::runtime_error("GpuTimers::end without begin");
+    ctx_.endLabel(cmd);
     vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_BOTTOM_OF_PIPE_BIT, pool_, open_.back() * 2 + 1);
     open_.pop_back();
 }

@@ -1,6 +1,7 @@
 // OpenEXR reading and writing through the OpenEXR 3 library. Files are read
 // from memory and written through an AtomicFile, so this module, not OpenEXR,
 // owns every file access: one open per call, one error style, atomic replace.
+#include "image/exr_detail.h"
 #include "image/file_util.h"
 #include "image/image_io.h"
 
@@ -15,6 +16,7 @@
 #include <ImfVersion.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <limits>
@@ -33,6 +35,27 @@ constexpr uint64_t kMaxPixels = uint64_t(1) << 28;
 // The same guard for the raw bytes of all channels together (many channels
 // make a big buffer from a modest window).
 constexpr uint64_t kMaxRawBytes = uint64_t(1) << 32;
+
+// The most pixel bytes one byte of a file can hold with each compression, with
+// margin: zlib (ZIP, ZIPS) expands at most 1032:1, PXR24 is zlib on 24 of
+// every 32 bits, an RLE run gives 128 bytes for 2, B44A a flat 4x4 block 32
+// bytes for 3 (B44: 14), PIZ's run-length code 512 bytes for about 11 bits,
+// and DWA adds zlib on top of 64:1 DCT blocks. A header can then not claim
+// more pixels than its data holds: a 300-byte file claimed a 2^28-pixel
+// window and made the reader allocate and clear 4 GB (found by fuzz_exr).
+uint64_t maxExpansion(Imf::Compression c) {
+    switch (c) {
+        case Imf::NO_COMPRESSION: return 1;
+        case Imf::RLE_COMPRESSION: return 64;
+        case Imf::ZIPS_COMPRESSION:
+        case Imf::ZIP_COMPRESSION: return 1100;
+        case Imf::PXR24_COMPRESSION: return 1500;
+        case Imf::B44_COMPRESSION: return 3;
+        case Imf::B44A_COMPRESSION: return 11;
+        case Imf::PIZ_COMPRESSION: return 400;
+        default: return 70000;  // DWAA, DWAB
+    }
+}
 
 // IoError messages are one line starting with the path; OpenEXR's may span
 // lines and quote the path again ('... image file "<path>". ...').
@@ -115,6 +138,108 @@ uint32_t readLe32(const uint8_t* p) {
 
 std::string sizeText(int64_t w, int64_t h) { return std::to_string(w) + "x" + std::to_string(h); }
 
+// Attribute types whose value OpenEXR 3.1 reads as a fixed number of bytes,
+// whatever the attribute's size field says.
+struct FixedType {
+    const char* name;
+    uint32_t bytes;
+};
+constexpr FixedType kFixedTypes[] = {
+    {"box2i", 16}, {"box2f", 16}, {"compression", 1}, {"chromaticities", 32}, {"deepImageState", 1},
+    {"double", 8}, {"envmap", 1}, {"float", 4}, {"int", 4}, {"keycode", 28}, {"lineOrder", 1},
+    {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"rational", 8}, {"tiledesc", 9},
+    {"timecode", 8}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12}, {"v3d", 24}};
+
+// OpenEXR reads names of up to 255 bytes plus the NUL.
+constexpr uint64_t kMaxNameBytes = 256;
+
+std::string printable(const std::string& s) {
+    std::string out;
+    for (unsigned char c : s.substr(0, 64)) out += std::isprint(c) ? char(c) : '?';
+    return out;
+}
+
+// Fails unless OpenEXR 3.1 reads exactly `size` bytes for this value. Then its
+// read position and the size fields agree attribute by attribute, and every
+// buffer it sizes from a value (strings, vectors, preview, unknown types) is
+// bounded by bytes the file really has.
+void checkAttributeValue(const std::string& path, const std::string& name, const std::string& type,
+                         const uint8_t* v, uint64_t size) {
+    auto bad = [&](const std::string& why) {
+        fail(path, "corrupt header (attribute '" + printable(name) + "' of type '" + printable(type) + "': " + why + ")");
+    };
+    for (const FixedType& f : kFixedTypes)
+        if (type == f.name) {
+            if (size != f.bytes)
+                bad("size " + std::to_string(size) + ", the type has " + std::to_string(f.bytes) + " bytes");
+            return;
+        }
+    if (type == "chlist") {
+        // Channels (name, then 16 bytes) up to an empty name; OpenEXR reads
+        // them to that end whatever the size says.
+        uint64_t at = 0;
+        for (;;) {
+            const void* nul = std::memchr(v + at, 0, std::min(size - at, kMaxNameBytes));
+            if (!nul) bad("channel list without its end within the attribute");
+            const uint64_t length = uint64_t(static_cast<const uint8_t*>(nul) - (v + at));
+            at += length + 1;
+            if (length == 0) break;
+            if (size - at < 16) bad("channel list without its end within the attribute");
+            at += 16;
+        }
+        if (at != size) bad("channel list of " + std::to_string(at) + " bytes, size " + std::to_string(size));
+    } else if (type == "stringvector") {
+        for (uint64_t at = 0; at < size;) {
+            if (size - at < 4) bad("string vector cut short");
+            const int32_t n = int32_t(readLe32(v + at));
+            at += 4;
+            if (n < 0 || uint64_t(n) > size - at)
+                bad("string of " + std::to_string(n) + " bytes in a value of " + std::to_string(size));
+            at += uint64_t(n);
+        }
+    } else if (type == "floatvector") {
+        if (size % 4) bad("size " + std::to_string(size) + " is not a whole number of floats");
+    } else if (type == "preview") {
+        if (size < 8) bad("size " + std::to_string(size) + " is shorter than the preview's header");
+        const uint64_t w = readLe32(v), h = readLe32(v + 4);
+        if (8 + 4 * w * h != size)
+            bad("preview " + sizeText(int64_t(w), int64_t(h)) + " does not fill its size " + std::to_string(size));
+    } else if (type == "idmanifest") {
+        if (size < 8) bad("size " + std::to_string(size) + " is shorter than the manifest's header");
+    }
+    // "string" and types OpenEXR does not know read exactly `size` bytes.
+}
+
+// Walks one header's attribute list (name, type, int32 size, value) from
+// `at`. OpenEXR allocates many values from their size before reading them: a
+// 119-byte file whose attribute of unknown type claimed 1.75 GB made it
+// allocate (and ASan clear) 1.75 GB (found by fuzz_exr).
+void checkAttributeSizes(const std::string& path, const MemoryIStream& in, uint64_t at) {
+    const uint8_t* bytes = in.bytes();
+    const uint64_t size = in.size();
+    // A name from `at`; false where OpenEXR's own read fails (no NUL in reach).
+    auto readName = [&](uint64_t& pos, std::string& out) -> bool {
+        const void* nul = pos < size ? std::memchr(bytes + pos, 0, std::min(size - pos, kMaxNameBytes)) : nullptr;
+        if (!nul) return false;
+        const uint64_t end = uint64_t(static_cast<const uint8_t*>(nul) - bytes);
+        out.assign(reinterpret_cast<const char*>(bytes + pos), end - pos);
+        pos = end + 1;
+        return true;
+    };
+    std::string name, type;
+    for (;;) {
+        if (!readName(at, name) || name.empty()) return;  // the empty name ends the header
+        if (!readName(at, type) || size - at < 4) return;
+        const int32_t claimed = int32_t(readLe32(bytes + at));
+        at += 4;
+        if (claimed < 0 || uint64_t(claimed) > size - at)
+            fail(path, "corrupt header (attribute '" + printable(name) + "' claims " + std::to_string(claimed) +
+                           " bytes, " + std::to_string(size - at) + " remain in the file)");
+        checkAttributeValue(path, name, type, bytes + at, uint64_t(claimed));
+        at += uint64_t(claimed);
+    }
+}
+
 // Reads the header(s) alone and rejects sizes no real file of ours has, before
 // OpenEXR allocates line buffers, offset tables or tiles from them.
 void checkHeaders(const std::string& path, MemoryIStream& in) {
@@ -130,6 +255,7 @@ void checkHeaders(const std::string& path, MemoryIStream& in) {
 
     in.seekg(8);
     for (;;) {
+        checkAttributeSizes(path, in, in.tellg());
         Imf::Header header;
         header.readFrom(in, version);
         const Imath::Box2i dw = header.dataWindow();
@@ -144,6 +270,10 @@ void checkHeaders(const std::string& path, MemoryIStream& in) {
         if (pixels * bytesPerPixel > kMaxRawBytes)
             fail(path, "data window " + sizeText(w, h) + " with " + std::to_string(bytesPerPixel) +
                            " bytes per pixel is too large (limit 4 GiB)");
+        if (pixels * bytesPerPixel > in.size() * maxExpansion(header.compression()))
+            fail(path, "data window " + sizeText(w, h) + " needs " + std::to_string(pixels * bytesPerPixel) +
+                           " bytes of pixels, more than a " + std::to_string(in.size()) +
+                           "-byte file holds with its compression");
         if (header.hasTileDescription()) {
             const Imf::TileDescription& t = header.tileDescription();
             if (uint64_t(t.xSize) * t.ySize > kMaxPixels)
@@ -163,8 +293,8 @@ struct ExrInput {
 
     // The comma runs checkHeaders before InputFile's constructor, which is
     // where OpenEXR first sizes buffers from the header.
-    explicit ExrInput(const std::string& path)
-        : bytes(detail::readFileBytes(path)), stream(path, bytes),
+    ExrInput(const std::string& path, std::vector<uint8_t> data)
+        : bytes(std::move(data)), stream(path, bytes),
           file((checkHeaders(path, stream), stream)) {
         // A file cut short has a partial chunk table; reading it would fail
         // chunk by chunk after the image is allocated.
@@ -263,9 +393,11 @@ void writeExr(const std::string& path, const ImageRGBA32F& img, const ExrOptions
     writeChannels(path, img.width, img.height, channels, options.type);
 }
 
-ImageRGBA32F readExr(const std::string& path) {
+ImageRGBA32F readExr(const std::string& path) { return detail::readExrBytes(path, detail::readFileBytes(path)); }
+
+ImageRGBA32F detail::readExrBytes(const std::string& path, std::vector<uint8_t> bytes) {
     return wrapErrors(path, [&] {
-        ExrInput in(path);
+        ExrInput in(path, std::move(bytes));
         const Imf::Header& header = in.file.header();
         for (const char* c : {"R", "G", "B"})
             if (!header.channels().findChannel(c))
@@ -312,8 +444,12 @@ void writeExrLayers(const std::string& path, uint32_t width, uint32_t height,
 }
 
 ExrLayerFile readExrLayers(const std::string& path) {
+    return detail::readExrLayersBytes(path, detail::readFileBytes(path));
+}
+
+ExrLayerFile detail::readExrLayersBytes(const std::string& path, std::vector<uint8_t> bytes) {
     return wrapErrors(path, [&] {
-        ExrInput in(path);
+        ExrInput in(path, std::move(bytes));
         const Imf::Header& header = in.file.header();
         const Imath::Box2i dw = header.dataWindow();
         ExrLayerFile result;
