@@ -45,10 +45,12 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
             target[d] = v.directional[d].mipView(level);
         }
         // Level 0 reads the radiance volume, every other level the one below it.
+        // At level 0 the unused source binding holds the target level itself,
+        // so that level is declared read as well as written.
         if (level == 0) tracker.image(v.radiance, gpu::use::ComputeRead);
         for (const gpu::Image& d : v.directional) {
             if (level > 0) tracker.imageMip(d, level - 1, gpu::use::ComputeRead);
-            tracker.imageMip(d, level, gpu::use::ComputeWrite, true);
+            tracker.imageMip(d, level, level == 0 ? gpu::use::ComputeReadWrite : gpu::use::ComputeWrite, true);
         }
         tracker.flush(cmd);
         gpu::Descriptors()
