@@ -48,7 +48,7 @@ std::string describe(const Triangle& t) {
 }  // namespace
 
 CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSpec>& grids, const std::string& label) {
-    render::SceneGpu sceneGpu(context(), s);
+    gpuscene::SceneGpu sceneGpu(context(), s);
     vxgi::Voxelizer voxelizer(context(), sceneGpu, false);
     CoverageReport total;
     size_t triangles = 0;

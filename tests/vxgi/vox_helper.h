@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gpu/tracker.h"
-#include "render/scene_gpu.h"
+#include "gpuscene/scene_gpu.h"
 #include "sat.h"
 #include "scene/scene.h"
 #include "shared/voxel_data.h"
@@ -41,7 +41,7 @@ struct VoxelRig {
     void updateTransforms(const scene::Scene& scene);  // after moving nodes
     VoxelReadback read() const { return readVoxels(volumes); }
 
-    render::SceneGpu sceneGpu;
+    gpuscene::SceneGpu sceneGpu;
     vxgi::Voxelizer voxelizer;
     vxgi::VoxelVolumes volumes;
     gpu::Tracker tracker;
