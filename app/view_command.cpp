@@ -23,6 +23,7 @@
 #include "gpu/context.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
+#include "device_faults.h"
 #include "render_command.h"
 #include "scene/scene.h"
 #include "view_swapchain.h"
@@ -45,6 +46,7 @@ public:
     void record(VkCommandBuffer) {}
     bool wantsMouse() const { return false; }
     bool wantsKeyboard() const { return false; }
+    void setError(std::string) {}
 };
 }  // namespace dvsgi::app
 #endif
@@ -258,18 +260,26 @@ int runView(const RenderOptions& options) {
     // Rebuilds after a change of options; on failure (out of memory at a large
     // window, say) the message is printed, the previous options come back and
     // the previous renderer stays. Returns whether it was rebuilt.
+    loaded = scene::Scene{};
+    ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
     auto rebuild = [&](const RenderOptions& previous) {
         try {
             renderer = makeRenderer(renderer->scene());
+            panel.setError("");
             return true;
+        } catch (const gpu::GpuError& e) {
+            // A lost device cannot draw the old renderer either: that ends the viewer.
+            if (e.result == VK_ERROR_DEVICE_LOST) throw;
+            const std::string message = describeGpuError(e, o) + " (setting reverted)";
+            std::fprintf(stderr, "dvsgi: %s\n", message.c_str());
+            panel.setError(message);
         } catch (const std::exception& e) {
             std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", e.what());
-            o = previous;
-            return false;
+            panel.setError(std::string(e.what()) + " (setting reverted)");
         }
+        o = previous;
+        return false;
     };
-    loaded = scene::Scene{};
-    ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
 
     FlyCamera fly;
     fly.setFrom(renderer->camera().world);
