@@ -11,6 +11,9 @@ namespace dvsgi::app {
 
 // The scene with --dynamic and --add-model applied.
 scene::Scene loadForOptions(const RenderOptions& options);
+// Adds `model` to `scene` as the --add-model object: scaled to `size` metres
+// (0: 1/5 of the scene), moving on a circle, dynamic. `label` names it in errors.
+void placeMovingModel(scene::Scene& scene, const scene::Scene& model, float size, const std::string& label);
 render::RenderSettings settingsForOptions(const RenderOptions& options);
 // Every renderer parameter as the metrics JSON records it (`parameters`).
 nlohmann::json parametersJson(const RenderOptions& options);
