@@ -368,6 +368,37 @@ const std::vector<OptionSpec>& optionSpecs() {
     return specs;
 }
 
+// `dvsgi soak` (app/soak_command.cpp): kept apart from the shared list above.
+const std::vector<OptionSpec>& soakOptionSpecs() {
+    static const std::vector<OptionSpec> specs = {
+        {"--soak-frames", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.soakFrames = uint32_t(parseUnsigned(opt, v, 1, 100000000, "an integer in 1..100000000"));
+         }},
+        {"--soak-every", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.soakEvery = uint32_t(parseUnsigned(opt, v, 1, 1000000, "an integer in 1..1000000"));
+         }},
+        {"--soak-out", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             requireExtension(opt, v, ".json", "a .json file name");
+             o.soakOut = v;
+         }},
+        {"--soak-max-growth", true,
+         [](RenderOptions& o, std::string_view opt, std::string_view v) {
+             o.soakMaxGrowth = parseFloat(opt, v, 0.0f, 1e6f, "a percentage >= 0");
+         }},
+    };
+    return specs;
+}
+
+const OptionSpec* findOption(std::string_view name) {
+    for (const auto* list : {&optionSpecs(), &soakOptionSpecs()})
+        for (const OptionSpec& s : *list)
+            if (s.name == name) return &s;
+    return nullptr;
+}
+
 bool isHelp(std::string_view a) { return a == "--help" || a == "-h"; }
 
 void parseRenderArgs(const std::vector<std::string_view>& args, RenderOptions& o) {
@@ -389,10 +420,8 @@ void parseRenderArgs(const std::vector<std::string_view>& args, RenderOptions& o
         }
         const size_t eq = arg.find('=');
         const std::string_view name = arg.substr(0, eq);
-        const auto& specs = optionSpecs();
-        const auto spec = std::find_if(specs.begin(), specs.end(),
-                                       [&](const OptionSpec& s) { return s.name == name; });
-        if (spec == specs.end())
+        const OptionSpec* spec = findOption(name);
+        if (!spec)
             reject("unknown option '" + std::string(name) + "' (see dvsgi --help)");
 
         std::string_view value;
@@ -439,14 +468,15 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     if (cmd == "render") result.command = Command::Render;
     else if (cmd == "view") result.command = Command::View;
     else if (cmd == "bench") result.command = Command::Bench;
+    else if (cmd == "soak") result.command = Command::Soak;
     else {
         result.command = Command::Help;
         if (cmd.starts_with("-"))
             result.error = "expected a command before '" + std::string(cmd) +
-                           "': render, view, bench, help or --version (see dvsgi --help)";
+                           "': render, view, bench, soak, help or --version (see dvsgi --help)";
         else
             result.error = "unknown command '" + std::string(cmd) +
-                           "' (expected render, view, bench, help or --version)";
+                           "' (expected render, view, bench, soak, help or --version)";
         return result;
     }
 

@@ -9,7 +9,7 @@
 
 namespace dvsgi::app {
 
-enum class Command { Render, View, Bench, Help, Version };
+enum class Command { Render, View, Bench, Soak, Help, Version };
 
 enum class ViewKind { Final, VoxelAlbedo, VoxelNormal, VoxelEmission, VoxelRadiance, VoxelDirectional };
 
@@ -90,6 +90,12 @@ struct RenderOptions {
     float benchMaxSeconds = 0.0f; // stop measuring a (scene, resolution) after this long; 0 = never
     bool benchQuick = false;      // Cornell box only, 32^3, 2 frames, 160x90
     bool benchTables = false;     // also the variants of the paper's Tables III and V
+
+    // `dvsgi soak` only (app/soak_command.cpp); the other commands ignore these.
+    uint32_t soakFrames = 10000;        // frames rendered in all
+    uint32_t soakEvery = 100;           // settings change and a memory report every K frames
+    std::string soakOut = "out/soak.json";
+    float soakMaxGrowth = 1.0f;         // percent of RSS or device memory; more fails the run
 };
 
 struct ParseResult {
