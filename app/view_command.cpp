@@ -257,11 +257,11 @@ int runView(const RenderOptions& options) {
         return r;
     };
     std::unique_ptr<render::Renderer> renderer = makeRenderer(loaded);
-    // Rebuilds after a change of options; on failure (out of memory at a large
-    // window, say) the message is printed, the previous options come back and
-    // the previous renderer stays. Returns whether it was rebuilt.
     loaded = scene::Scene{};
     ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
+    // Rebuilds after a change of options; on failure (out of memory at a large
+    // window, say) the message is printed and shown in the panel, the previous
+    // options come back and the previous renderer stays. Returns whether it was rebuilt.
     auto rebuild = [&](const RenderOptions& previous) {
         try {
             renderer = makeRenderer(renderer->scene());
