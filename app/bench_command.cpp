@@ -15,6 +15,7 @@
 
 #include "gpu/context.h"
 #include "image/image_io.h"
+#include "progress.h"
 #include "render/renderer.h"
 #include "render_command.h"
 #include "scene/load.h"
@@ -175,11 +176,13 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
         }
 
     const auto warmStart = Clock::now();
+    FrameProgress progress(m.scene + " " + std::to_string(rs.voxels) + "^3", warmup + frames, !o.quiet);
     uint32_t frame = 0;
     for (; frame < warmup; ++frame) {
         renderer.setTime(float(frame) * o.timeStep);
         const auto frameStart = Clock::now();
         const render::FrameStats stats = renderer.renderFrame();
+        progress.done(frame + 1);
         // With --bounces auto the first frame converges the bounces and the
         // measured frames then add one bounce each from the previous frame.
         if (frame == 0 && stats.bounceChange >= 0.0)
@@ -199,6 +202,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
         renderer.markStaticDirty();
         const auto start = Clock::now();
         const render::FrameStats stats = renderer.renderFrame();
+        progress.done(frame + 1);
         m.wallMs.push_back(msSince(start));
         m.frameMs.push_back(stats.gpuMs);
         for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);

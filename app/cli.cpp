@@ -23,11 +23,13 @@ struct ParseError {
 
 bool isHelp(std::string_view a) { return a == "--help" || a == "-h"; }
 
-const char* commandName(uint32_t mask) { return mask == kRender ? "render" : mask == kView ? "view" : "bench"; }
+const char* commandName(uint32_t mask) {
+    return mask == kRender ? "render" : mask == kView ? "view" : mask == kBench ? "bench" : "soak";
+}
 
 std::string takers(uint32_t commands) {
     std::string t;
-    for (uint32_t c : {kRender, kView, kBench})
+    for (uint32_t c : {kRender, kView, kBench, kSoak})
         if (commands & c) t += std::string(t.empty() ? "" : " and ") + "dvsgi " + commandName(c);
     return t;
 }
@@ -140,12 +142,13 @@ ParseResult parseCommandLine(int argc, const char* const* argv) {
     if (cmd == "render") result.command = Command::Render, mask = kRender;
     else if (cmd == "view") result.command = Command::View, mask = kView;
     else if (cmd == "bench") result.command = Command::Bench, mask = kBench;
+    else if (cmd == "soak") result.command = Command::Soak, mask = kSoak;
     else {
         if (cmd.starts_with("-"))
             result.error = "expected a command before '" + cmd +
-                           "': render, view, bench, help or --version (see dvsgi --help)";
+                           "': render, view, bench, soak, help or --version (see dvsgi --help)";
         else
-            result.error = "unknown command '" + cmd + "' (expected render, view, bench, help or --version)";
+            result.error = "unknown command '" + cmd + "' (expected render, view, bench, soak, help or --version)";
         return result;
     }
 

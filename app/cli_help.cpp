@@ -62,9 +62,9 @@ std::string details(const Setting& s) {
     if (s.repeatable) parts.push_back("repeatable");
     if (s.commands != kAll) {
         std::string who;
-        for (uint32_t c : {kRender, kView, kBench})
+        for (uint32_t c : {kRender, kView, kBench, kSoak})
             if (s.commands & c)
-                who += std::string(who.empty() ? "" : ", ") + (c == kRender ? "render" : c == kView ? "view" : "bench");
+                who += std::string(who.empty() ? "" : ", ") + (c == kRender ? "render" : c == kView ? "view" : c == kBench ? "bench" : "soak");
         parts.push_back(who + " only");
     }
     if (s.apply == Apply::NextFrame) parts.push_back("viewer: next frame");
@@ -84,6 +84,8 @@ std::string usageText() {
         "  dvsgi render [SCENE] [options]   render one frame to an EXR (and a PNG preview)\n"
         "  dvsgi view   [SCENE] [options]   interactive window\n"
         "  dvsgi bench  [SCENE] [options]   time the frame passes\n"
+        "  dvsgi soak   [SCENE] [options]   render many frames, changing settings, and check that\n"
+        "                                   host and device memory do not grow\n"
         "  dvsgi help | --help | -h         this text\n"
         "  dvsgi --version                  print the version\n"
         "\n"

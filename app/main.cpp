@@ -6,11 +6,13 @@
 #include <new>
 
 #include "bench_command.h"
+#include "device_faults.h"
 #include "gpu/check.h"
 #include "image/image_io.h"
 #include "options.h"
 #include "render_command.h"
 #include "settings_table.h"
+#include "soak_command.h"
 #include "view_command.h"
 #include "scene/load.h"
 
@@ -28,13 +30,14 @@ int main(int argc, char** argv) {
             case app::Command::Render: return app::runRender(parsed.render);
             case app::Command::View: return app::runView(parsed.render);
             case app::Command::Bench: return app::runBench(parsed.render);
+            case app::Command::Soak: return app::runSoak(parsed.render);
         }
     } catch (const scene::LoadError& e) {
         std::fprintf(stderr, "dvsgi: %s\n", e.what());
     } catch (const image::IoError& e) {
         std::fprintf(stderr, "dvsgi: %s\n", e.what());
     } catch (const gpu::GpuError& e) {
-        std::fprintf(stderr, "dvsgi: %s\n", app::withFlagNames(e.what()).c_str());
+        std::fprintf(stderr, "dvsgi: %s\n", app::withFlagNames(app::describeGpuError(e, parsed.render)).c_str());
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "dvsgi: out of host memory\n");
     } catch (const std::exception& e) {

@@ -13,7 +13,7 @@
 
 namespace dvsgi::app {
 
-enum class Command { Render, View, Bench, Help, Version };
+enum class Command { Render, View, Bench, Soak, Help, Version };
 
 // Everything `dvsgi render`, `view` and `bench` accept. The renderer's settings
 // are the library's own struct, so their defaults are its member initialisers;
@@ -62,6 +62,12 @@ struct RenderOptions {
     bool isGiven(std::string_view name) const {
         return std::find(given.begin(), given.end(), name) != given.end();
     }
+
+    // `dvsgi soak` only (app/soak_command.cpp); the other commands ignore these.
+    uint32_t soakFrames = 10000;        // frames rendered in all
+    uint32_t soakEvery = 100;           // settings change and a memory report every K frames
+    std::string soakOut = "out/soak.json";
+    float soakMaxGrowth = 1.0f;         // percent of RSS or device memory; more fails the run
 };
 
 struct ParseResult {

@@ -9,6 +9,7 @@
 
 #include "gpu/context.h"
 #include "image/image_io.h"
+#include "progress.h"
 #include "render/renderer.h"
 #include "scene/load.h"
 #include "settings_table.h"
@@ -46,34 +47,11 @@ void markDynamic(scene::Scene& s, const std::vector<std::string>& names) {
     }
 }
 
-// Loads `path`, scales it to `size` metres and sends it round a circle on the
-// floor of the scene's bounds as a dynamic object.
+// Loads `path` and places it as the moving model (placeMovingModel).
 void addMovingModel(scene::Scene& s, const std::string& path, float size, bool allowOutside) {
     scene::LoadOptions lo;
     lo.allowOutsideReferences = allowOutside;
-    const scene::Scene model = scene::loadScene(path, lo);
-    const scene::Bounds sb = scene::worldBounds(s, scene::drawItems(s, scene::worldMatrices(s)));
-    const scene::Bounds mb = scene::worldBounds(model, scene::drawItems(model, scene::worldMatrices(model)));
-    if (!sb.valid() || !mb.valid()) throw std::runtime_error("--add-model: " + path + " or the scene has no geometry");
-    const glm::vec3 se = sb.max - sb.min, me = mb.max - mb.min;
-    const float target = size > 0.0f ? size : 0.2f * std::max({se.x, se.y, se.z});
-    const float scale = target / std::max({me.x, me.y, me.z, 1e-9f});
-    const int fit = scene::appendScene(s, model, "added model");
-    // Bottom centre of the model at the mover's origin.
-    s.nodes[size_t(fit)].scale = glm::vec3(scale);
-    s.nodes[size_t(fit)].translation = -scale * glm::vec3((mb.min.x + mb.max.x) * 0.5f, mb.min.y,
-                                                          (mb.min.z + mb.max.z) * 0.5f);
-    scene::Node mover;
-    mover.name = "added model path";
-    mover.children = {fit};
-    s.nodes.push_back(mover);
-    const int moverIndex = int(s.nodes.size() - 1);
-    s.nodes[size_t(fit)].parent = moverIndex;
-    s.roots.erase(std::remove(s.roots.begin(), s.roots.end(), fit), s.roots.end());
-    s.roots.push_back(moverIndex);
-    const glm::vec3 centre((sb.min.x + sb.max.x) * 0.5f, sb.min.y, (sb.min.z + sb.max.z) * 0.5f);
-    const float radius = 0.25f * std::min(se.x, se.z);
-    scene::addCircularPath(s, moverIndex, centre, radius, 4.0f);
+    placeMovingModel(s, scene::loadScene(path, lo), size, path);
 }
 
 void printTable(const render::FrameStats& stats, const std::vector<render::MemoryItem>& memory) {
@@ -163,6 +141,33 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 
 }  // namespace
 
+// Scales `model` to `size` metres (0: 1/5 of the scene) and sends it round a
+// circle on the floor of the scene's bounds as a dynamic object.
+void placeMovingModel(scene::Scene& s, const scene::Scene& model, float size, const std::string& label) {
+    const scene::Bounds sb = scene::worldBounds(s, scene::drawItems(s, scene::worldMatrices(s)));
+    const scene::Bounds mb = scene::worldBounds(model, scene::drawItems(model, scene::worldMatrices(model)));
+    if (!sb.valid() || !mb.valid()) throw std::runtime_error("--add-model: " + label + " or the scene has no geometry");
+    const glm::vec3 se = sb.max - sb.min, me = mb.max - mb.min;
+    const float target = size > 0.0f ? size : 0.2f * std::max({se.x, se.y, se.z});
+    const float scale = target / std::max({me.x, me.y, me.z, 1e-9f});
+    const int fit = scene::appendScene(s, model, "added model");
+    // Bottom centre of the model at the mover's origin.
+    s.nodes[size_t(fit)].scale = glm::vec3(scale);
+    s.nodes[size_t(fit)].translation = -scale * glm::vec3((mb.min.x + mb.max.x) * 0.5f, mb.min.y,
+                                                          (mb.min.z + mb.max.z) * 0.5f);
+    scene::Node mover;
+    mover.name = "added model path";
+    mover.children = {fit};
+    s.nodes.push_back(mover);
+    const int moverIndex = int(s.nodes.size() - 1);
+    s.nodes[size_t(fit)].parent = moverIndex;
+    s.roots.erase(std::remove(s.roots.begin(), s.roots.end(), fit), s.roots.end());
+    s.roots.push_back(moverIndex);
+    const glm::vec3 centre((sb.min.x + sb.max.x) * 0.5f, sb.min.y, (sb.min.z + sb.max.z) * 0.5f);
+    const float radius = 0.25f * std::min(se.x, se.z);
+    scene::addCircularPath(s, moverIndex, centre, radius, 4.0f);
+}
+
 scene::Scene loadForOptions(const RenderOptions& o) {
     scene::LoadOptions lo;
     lo.allowOutsideReferences = o.allowOutsideReferences;
@@ -205,9 +210,11 @@ int runRender(const RenderOptions& o) {
     render::FrameStats stats, first;
     glm::dvec3 outputMean(0.0);
     std::string lastExr, lastPng;
+    FrameProgress progress("", o.frames, !o.quiet);
     for (uint32_t frame = 0; frame < o.frames; ++frame) {
         if (o.frames > 1 || !scene.animations.empty()) renderer.setTime(float(frame) * o.timeStep);
         stats = renderer.renderFrame();
+        progress.done(frame + 1);
         if (frame == 0) {
             first = stats;
             if (stats.bounceChange >= 0.0 && !o.quiet)

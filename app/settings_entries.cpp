@@ -20,6 +20,7 @@ const char* const kCones = "Cone tracing and composition";
 const char* const kAnimation = "Animation and dynamic objects";
 const char* const kViewerGroup = "Viewer (dvsgi view)";
 const char* const kBenchGroup = "Benchmark (dvsgi bench)";
+const char* const kSoakGroup = "Soak (dvsgi soak)";
 
 constexpr Apply kFrame = Apply::NextFrame;
 constexpr Apply kNew = Apply::NewRenderer;
@@ -509,6 +510,22 @@ std::vector<Setting> conesAndCommands() {
                    kBench},
                   FIELD(benchTables)),
              "on"),
+
+        // dvsgi soak.
+        with(integer({"soak-frames", kSoakGroup, "N", "", "frames in all", kSoak}, 1, 10000000, FIELD(soakFrames)),
+             "400"),
+        with(integer({"soak-every", kSoakGroup, "K", "", "frames between setting changes and memory reports", kSoak},
+                     1, 1000000, FIELD(soakEvery)),
+             "20"),
+        with(text({"soak-out", kSoakGroup, "FILE.json", "", "the report series and the growth", kSoak},
+                  FIELD(soakOut), ".json"),
+             "s.json"),
+        with(number({"soak-max-growth", kSoakGroup, "P", "%",
+                     "fail (exit 4) when RSS or device memory grows by more than P percent after the first "
+                     "settings cycle",
+                     kSoak},
+                    0, 1000, FIELD(soakMaxGrowth)),
+             "2", "a percentage in 0..1000"),
     };
 }
 
@@ -541,6 +558,10 @@ const std::vector<SettingGroup>& settingGroups() {
          "Without SCENE: the paper's Table II suite, Cornell box, Sibenik and Crytek Sponza from the shared "
          "folder, each with the Stanford bunny as the moving dynamic object (--add-model replaces the bunny). "
          "Images are 640x360 unless --width/--height are given (docs/benchmarks.md)."},
+        {kSoakGroup,
+         "A moving model (--add-model, else a built-in cube) and a moving first light; every --soak-every frames "
+         "the settings change (bounces, cone set, shadows, output term, voxel view), which builds a new renderer, "
+         "and host RSS and device memory are reported (docs/RELIABILITY.md). Needs --voxels >= 32."},
     };
     return groups;
 }

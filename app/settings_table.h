@@ -19,7 +19,7 @@
 namespace dvsgi::app {
 
 // Which commands take a setting (bits).
-enum CommandMask : uint32_t { kRender = 1, kView = 2, kBench = 4, kAll = kRender | kView | kBench };
+enum CommandMask : uint32_t { kRender = 1, kView = 2, kBench = 4, kSoak = 8, kAll = kRender | kView | kBench | kSoak };
 
 // What a change needs when the program is already running (the viewer).
 enum class Apply {
@@ -82,7 +82,7 @@ struct SettingGroup {
 };
 const std::vector<SettingGroup>& settingGroups();
 
-// Every setting `command` takes (kRender, kView or kBench), name -> value.
+// Every setting `command` takes (kRender, kView, kBench or kSoak), name -> value.
 nlohmann::json settingsJson(const RenderOptions& options, uint32_t command);
 
 // A library message that starts with a setting's name ("voxels: ...") gets

@@ -23,6 +23,7 @@
 #include "gpu/context.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
+#include "device_faults.h"
 #include "render_command.h"
 #include "settings_table.h"
 #include "scene/scene.h"
@@ -46,6 +47,7 @@ public:
     void record(VkCommandBuffer) {}
     bool wantsMouse() const { return false; }
     bool wantsKeyboard() const { return false; }
+    void setError(std::string) {}
 };
 }  // namespace dvsgi::app
 #endif
@@ -260,18 +262,29 @@ int runView(const RenderOptions& options) {
         return r;
     };
     std::unique_ptr<render::Renderer> renderer = makeRenderer(loaded);
+    loaded = scene::Scene{};
+    ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
     // Rebuilds after a change of options; on failure (out of memory at a large
-    // window, say) the message is printed, the previous options come back and
-    // the previous renderer stays. Returns whether it was rebuilt.
+    // window, say) the message is printed and shown in the panel, the previous
+    // options come back and the previous renderer stays. Returns whether it was rebuilt.
     auto rebuild = [&](const RenderOptions& previous) {
         try {
             renderer = makeRenderer(renderer->scene());
+            panel.setError("");
             return true;
+        } catch (const gpu::GpuError& e) {
+            // A lost device cannot draw the old renderer either: that ends the viewer.
+            if (e.result == VK_ERROR_DEVICE_LOST) throw;
+            const std::string message = describeGpuError(e, o) + " (setting reverted)";
+            std::fprintf(stderr, "dvsgi: %s\n", message.c_str());
+            panel.setError(message);
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", withFlagNames(e.what()).c_str());
-            o = previous;
-            return false;
+            const std::string message = withFlagNames(e.what());
+            std::fprintf(stderr, "dvsgi: %s (setting reverted)\n", message.c_str());
+            panel.setError(message + " (setting reverted)");
         }
+        o = previous;
+        return false;
     };
     // A panel change: from the next frame when the renderer can take it, else
     // (new resources needed) a new renderer.
@@ -286,8 +299,6 @@ int runView(const RenderOptions& options) {
         }
         return rebuild(previous);
     };
-    loaded = scene::Scene{};
-    ViewPanel panel(ctx, window.handle, swapchain);  // after our callbacks: ImGui chains them
 
     FlyCamera fly;
     fly.setFrom(renderer->camera().world);

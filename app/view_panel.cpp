@@ -116,6 +116,13 @@ ViewPanel::Actions ViewPanel::build(RenderOptions& o, render::Renderer& renderer
     // Small windows start with the panel collapsed (click its title to open it).
     ImGui::SetNextWindowCollapsed(ImGui::GetIO().DisplaySize.x < 480.0f, ImGuiCond_FirstUseEver);
     ImGui::Begin("dvsgi");
+    if (!error_.empty()) {
+        // A change that failed (out of memory, say) stays visible until dismissed.
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.3f, 1.0f));
+        ImGui::TextWrapped("%s", error_.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("dismiss")) error_.clear();
+    }
     ImGui::Text("%.1f ms/frame, GPU %.1f ms, %s", frameMs, stats.gpuMs, presentMode);
     if (ImGui::Button("Screenshot (EXR + PNG)")) a.screenshot = true;
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -50,8 +51,11 @@ public:
 
     bool wantsMouse() const;
     bool wantsKeyboard() const;
+    // Shown at the top of the panel (e.g. why a setting was reverted); empty clears it.
+    void setError(std::string message) { error_ = std::move(message); }
 
 private:
+    std::string error_;
     const gpu::Context& ctx_;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     std::vector<float> frameMs_, gpuMs_;  // the graph's history

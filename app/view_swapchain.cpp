@@ -6,6 +6,7 @@
 
 #include "gpu/barriers.h"
 #include "gpu/check.h"
+#include "gpu/fault.h"
 #include "gpu/context.h"
 #include "gpu/resources.h"
 #include "shared/present_pass.h"
@@ -166,7 +167,15 @@ void Swapchain::create(uint32_t width, uint32_t height, bool vsync) {
     ci.clipped = VK_TRUE;
     ci.oldSwapchain = swapchain_;
     VkSwapchainKHR fresh = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateSwapchainKHR(ctx_.device, &ci, nullptr, &fresh));
+    VkResult r = gpu::fault::swapchain();
+    if (r == VK_SUCCESS) r = vkCreateSwapchainKHR(ctx_.device, &ci, nullptr, &fresh);
+    if (r != VK_SUCCESS)
+        throw gpu::GpuError("--width " + std::to_string(width) + " --height " + std::to_string(height) +
+                                ": the window's swapchain (" + std::to_string(extent_.width) + "x" +
+                                std::to_string(extent_.height) + ", " + std::to_string(count) + " images, " +
+                                presentModeName() + ") could not be created on " + ctx_.deviceName + ": " +
+                                gpu::resultName(r),
+                            r);
     destroy();
     if (swapchain_) vkDestroySwapchainKHR(ctx_.device, swapchain_, nullptr);
     swapchain_ = fresh;

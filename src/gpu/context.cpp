@@ -7,6 +7,7 @@
 #include <mutex>
 
 #include "gpu/check.h"
+#include "gpu/fault.h"
 
 namespace dvsgi::gpu {
 
@@ -21,7 +22,7 @@ const char* resultName(VkResult r) {
         DVSGI_RESULT(VK_ERROR_INCOMPATIBLE_DRIVER) DVSGI_RESULT(VK_ERROR_TOO_MANY_OBJECTS)
         DVSGI_RESULT(VK_ERROR_FORMAT_NOT_SUPPORTED) DVSGI_RESULT(VK_ERROR_OUT_OF_POOL_MEMORY)
         DVSGI_RESULT(VK_ERROR_SURFACE_LOST_KHR) DVSGI_RESULT(VK_ERROR_OUT_OF_DATE_KHR)
-        DVSGI_RESULT(VK_SUBOPTIMAL_KHR)
+        DVSGI_RESULT(VK_SUBOPTIMAL_KHR) DVSGI_RESULT(VK_ERROR_NATIVE_WINDOW_IN_USE_KHR)
 #undef DVSGI_RESULT
         default: return "VkResult(other)";
     }
@@ -282,6 +283,9 @@ Context::Context(const ContextOptions& options) {
     if (features.atomicFloat) deviceExtensions.push_back(VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
     features.conservativeRaster = hasDeviceExtension(physical, VK_EXT_CONSERVATIVE_RASTERIZATION_EXTENSION_NAME);
     if (features.conservativeRaster) deviceExtensions.push_back(VK_EXT_CONSERVATIVE_RASTERIZATION_EXTENSION_NAME);
+    // Only for reporting (the soak's device-memory series); costs nothing when absent.
+    features.memoryBudget = hasDeviceExtension(physical, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
+    if (features.memoryBudget) deviceExtensions.push_back(VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
 
     // Enable exactly what the shaders use, not everything the device offers.
     VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicOn{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
@@ -352,6 +356,11 @@ Context::Context(const ExternalDevice& external, const ContextOptions& options) 
 // Shared by both constructors once instance, device and queue are known.
 void Context::finishSetup(const ContextOptions& options) {
     vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+    VkPhysicalDeviceVulkan11Properties p11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES};
+    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    p2.pNext = &p11;
+    vkGetPhysicalDeviceProperties2(physical, &p2);
+    maxAllocationSize = p11.maxMemoryAllocationSize;
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(device, "vkCmdPushDescriptorSetKHR"));
     // Null when the extension was not enabled: every pass binds through it.
@@ -431,6 +440,19 @@ uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags)
     throw GpuError("no Vulkan memory type with the required properties", VK_ERROR_FEATURE_NOT_PRESENT);
 }
 
+int64_t Context::deviceMemoryUsage() const {
+    if (!features.memoryBudget) return -1;
+    VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
+    VkPhysicalDeviceMemoryProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
+    props.pNext = &budget;
+    vkGetPhysicalDeviceMemoryProperties2(physical, &props);
+    int64_t used = 0;
+    for (uint32_t i = 0; i < props.memoryProperties.memoryHeapCount; ++i)
+        if (props.memoryProperties.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            used += int64_t(budget.heapUsage[i]);
+    return used;
+}
+
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) const {
     VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     ai.commandPool = commandPool;
@@ -452,11 +474,22 @@ void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) 
     VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
     si.commandBufferInfoCount = 1;
     si.pCommandBufferInfos = &cbi;
-    VkResult r = vkQueueSubmit2(queue, 1, &si, fence);
-    if (r == VK_SUCCESS) r = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+    VkResult r = fault::submission();
+    const char* call = "vkQueueSubmit2";
+    if (r == VK_SUCCESS) r = vkQueueSubmit2(queue, 1, &si, fence);
+    if (r == VK_SUCCESS) {
+        call = "vkWaitForFences";
+        r = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+    }
     vkDestroyFence(device, fence, nullptr);
     vkFreeCommandBuffers(device, commandPool, 1, &cmd);
-    VK_CHECK(r);
+    // A lost device is no setting's fault: say so plainly, since nothing the
+    // user changes on the command line brings it back.
+    if (r == VK_ERROR_DEVICE_LOST)
+        throw GpuError("the Vulkan device (" + deviceName + ") was lost: " + call +
+                           " returned VK_ERROR_DEVICE_LOST (the driver or GPU reset or crashed)",
+                       r);
+    if (r != VK_SUCCESS) throwVkError(call, r);
 }
 
 }  // namespace dvsgi::gpu

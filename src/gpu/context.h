@@ -47,6 +47,7 @@ struct DeviceFeatures {
     bool conservativeRaster = false;  // VK_EXT_conservative_rasterization
     bool atomicFloat = false;         // shaderImageFloat32AtomicAdd
     bool samplerAnisotropy = false;   // enabled on the device; samplers use anisotropy only then
+    bool memoryBudget = false;        // VK_EXT_memory_budget enabled (deviceMemoryUsage() works)
 };
 
 class Context {
@@ -90,6 +91,11 @@ public:
     void endLabel(VkCommandBuffer cmd) const;
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const;
+    // The driver's own count of bytes in use on device-local heaps (all
+    // processes' view of this one, VK_EXT_memory_budget); -1 without the extension.
+    int64_t deviceMemoryUsage() const;
+    // maxMemoryAllocationSize (Vulkan 1.1): the largest single allocation.
+    uint64_t maxAllocationSize = 0;
 
     // Records commands into a fresh primary command buffer, submits and waits.
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record) const;

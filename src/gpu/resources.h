@@ -16,6 +16,15 @@ class Context;
 
 enum class MemoryUse { Device, Upload, Readback };
 
+// Every allocation Buffer and Image hold right now, process-wide. The soak
+// (`dvsgi soak`) watches these: a leaked resource shows up even on drivers
+// without VK_EXT_memory_budget.
+struct LiveMemory {
+    uint64_t bytes = 0;
+    uint64_t allocations = 0;
+};
+LiveMemory liveDeviceMemory();
+
 class Buffer {
 public:
     Buffer() = default;
@@ -37,6 +46,7 @@ private:
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
+    VkDeviceSize allocated_ = 0;  // the allocation's size (>= size_), for liveDeviceMemory()
     void* mapped_ = nullptr;
 };
 

@@ -102,7 +102,7 @@ TEST(Cli, HelpAnywhereWins) {
 }
 
 TEST(Cli, UnknownCommand) {
-    expectError({"paint"}, "unknown command 'paint' (expected render, view, bench, help or --version)");
+    expectError({"paint"}, "unknown command 'paint' (expected render, view, bench, soak, help or --version)");
     const ParseResult r = parse({"--width", "5"});
     EXPECT_NE(r.error.find("'--width'"), std::string::npos) << r.error;
 }
@@ -293,4 +293,29 @@ TEST(Cli, ConeClearance) {
     for (auto* bad : {"-1", "9", "wide", "nan"})
         expectBadValue("--cone-clearance", bad, "a number in 0..8 (0 = off)");
     EXPECT_NE(usageText().find("--cone-clearance"), std::string::npos);
+}
+
+TEST(Cli, Soak) {
+    const ParseResult d = parse({"soak"});
+    ASSERT_TRUE(d.error.empty()) << d.error;
+    EXPECT_EQ(d.command, Command::Soak);
+    EXPECT_EQ(d.render.soakFrames, 10000u);
+    EXPECT_EQ(d.render.soakEvery, 100u);
+    EXPECT_EQ(d.render.soakOut, "out/soak.json");
+    EXPECT_EQ(d.render.soakMaxGrowth, 1.0f);
+    const ParseResult r = parse({"soak", "--soak-frames", "200", "--soak-every=20", "--soak-out", "x/s.json",
+                                 "--soak-max-growth", "0.5", "--voxels", "32"});
+    ASSERT_TRUE(r.error.empty()) << r.error;
+    EXPECT_EQ(r.render.soakFrames, 200u);
+    EXPECT_EQ(r.render.soakEvery, 20u);
+    EXPECT_EQ(r.render.soakOut, "x/s.json");
+    EXPECT_EQ(r.render.soakMaxGrowth, 0.5f);
+    EXPECT_EQ(r.render.voxels, 32u);
+    expectBadValue("--soak-frames", "0", "an integer in 1..100000000");
+    expectBadValue("--soak-every", "-3", "an integer in 1..1000000");
+    expectBadValue("--soak-out", "soak.txt", "a .json file name");
+    expectBadValue("--soak-max-growth", "nan", "a percentage >= 0");
+    const std::string u = usageText();
+    for (auto* s : {"dvsgi soak", "--soak-frames", "--soak-every", "--soak-out", "--soak-max-growth"})
+        EXPECT_NE(u.find(s), std::string::npos) << "usage lacks '" << s << "'";
 }
