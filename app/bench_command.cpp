@@ -166,7 +166,7 @@ double msSince(Clock::time_point start) {
 // failure (e.g. out of device memory); the caller records it.
 void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o, uint32_t warmup,
              uint32_t frames, double maxSeconds, Measurement& m, std::vector<std::string>& seenWarnings) {
-        const auto setupStart = Clock::now();
+    const auto setupStart = Clock::now();
     render::Renderer renderer(ctx, scene, o.settings);
     const double setupMs = msSince(setupStart);
     for (const std::string& w : renderer.warnings())
@@ -176,7 +176,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
         }
 
     const auto warmStart = Clock::now();
-    FrameProgress progress(m.scene + " " + std::to_string(rs.voxels) + "^3", warmup + frames, !o.quiet);
+    FrameProgress progress(m.scene + " " + std::to_string(o.settings.voxels) + "^3", warmup + frames, !o.quiet);
     uint32_t frame = 0;
     for (; frame < warmup; ++frame) {
         renderer.setTime(float(frame) * o.timeStep);

@@ -512,7 +512,7 @@ std::vector<Setting> conesAndCommands() {
              "on"),
 
         // dvsgi soak.
-        with(integer({"soak-frames", kSoakGroup, "N", "", "frames in all", kSoak}, 1, 10000000, FIELD(soakFrames)),
+        with(integer({"soak-frames", kSoakGroup, "N", "", "frames in all", kSoak}, 1, 100000000, FIELD(soakFrames)),
              "400"),
         with(integer({"soak-every", kSoakGroup, "K", "", "frames between setting changes and memory reports", kSoak},
                      1, 1000000, FIELD(soakEvery)),

@@ -79,7 +79,7 @@ Setting integer(const Meta& m, double lo, double hi, F ref, bool pow2 = false, b
     s.hi = hi;
     s.pow2 = pow2;
     s.zeroOk = zeroOk;
-    s.expected = pow2 ? s.range() : hi >= 1e9 ? "an integer >= " + formatNumber(lo) : "an integer in " + s.range();
+    s.expected = pow2 ? s.range() : hi >= 1e6 ? "an integer >= " + formatNumber(lo) : "an integer in " + s.range();
     s.parse = [ref, lo, hi, pow2, zeroOk](RenderOptions& o, std::string_view v) {
         const std::optional<uint64_t> n = parseUnsigned(v);
         if (!n) return false;

@@ -310,11 +310,14 @@ TEST(Cli, Soak) {
     EXPECT_EQ(r.render.soakEvery, 20u);
     EXPECT_EQ(r.render.soakOut, "x/s.json");
     EXPECT_EQ(r.render.soakMaxGrowth, 0.5f);
-    EXPECT_EQ(r.render.voxels, 32u);
-    expectBadValue("--soak-frames", "0", "an integer in 1..100000000");
-    expectBadValue("--soak-every", "-3", "an integer in 1..1000000");
-    expectBadValue("--soak-out", "soak.txt", "a .json file name");
-    expectBadValue("--soak-max-growth", "nan", "a percentage >= 0");
+    EXPECT_EQ(r.render.settings.voxels, 32u);
+    expectError({"soak", "--soak-frames", "0"}, "--soak-frames: expected an integer >= 1, got '0'");
+    expectError({"soak", "--soak-every", "-3"}, "--soak-every: expected an integer >= 1, got '-3'");
+    expectError({"soak", "--soak-out", "soak.txt"}, "--soak-out: expected a .json file name, got 'soak.txt'");
+    expectError({"soak", "--soak-max-growth", "nan"},
+                "--soak-max-growth: expected a percentage in 0..1000, got 'nan'");
+    expectError({"render", "--soak-frames", "5"},
+                "--soak-frames: an option of dvsgi soak, not of dvsgi render (see dvsgi --help)");
     const std::string u = usageText();
     for (auto* s : {"dvsgi soak", "--soak-frames", "--soak-every", "--soak-out", "--soak-max-growth"})
         EXPECT_NE(u.find(s), std::string::npos) << "usage lacks '" << s << "'";
