@@ -10,7 +10,8 @@ cmake --build "$build" -j "$(nproc)"
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 # validate_scenes (label "validation": every shared scene under the validation
-# layer, ~8 min on lavapipe, Sibenik's voxelization alone several) runs with
+# layer: 205 s on the 2-core machine beside one build, 507 s at load 10, most of it Sibenik's
+# voxelization) runs with
 # `ctest -L validation` or DVSGI_VALIDATE_SCENES=1, keeping this suite near 10 min.
 exclude=(-LE validation)
 [ "${DVSGI_VALIDATE_SCENES:-0}" = 1 ] && exclude=()
