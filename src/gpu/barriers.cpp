@@ -6,17 +6,10 @@ namespace dvsgi::gpu {
 
 namespace {
 
-void imageBarrier(VkCommandBuffer cmd, const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
-    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = from.stages ? from.stages : VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
-    b.srcAccessMask = from.access;
-    b.dstStageMask = to.stages;
-    b.dstAccessMask = to.access;
-    b.oldLayout = from.layout;
-    b.newLayout = to.layout;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image.handle();
-    b.subresourceRange = range;
+void recordImageBarrier(VkCommandBuffer cmd, const Image& image, VkImageSubresourceRange range, ImageUse from,
+                        ImageUse to) {
+    if (!from.stages) from.stages = VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
+    const VkImageMemoryBarrier2 b = imageBarrier(image, range, from, to);
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.imageMemoryBarrierCount = 1;
     dep.pImageMemoryBarriers = &b;
@@ -38,12 +31,26 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAcces
 
 }  // namespace
 
+VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
+    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+    b.srcStageMask = from.stages;
+    b.srcAccessMask = from.access;
+    b.dstStageMask = to.stages;
+    b.dstAccessMask = to.access;
+    b.oldLayout = from.layout;
+    b.newLayout = to.layout;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image.handle();
+    b.subresourceRange = range;
+    return b;
+}
+
 void transition(VkCommandBuffer cmd, const Image& image, ImageUse from, ImageUse to) {
-    imageBarrier(cmd, image, {image.aspect(), 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS}, from, to);
+    recordImageBarrier(cmd, image, {image.aspect(), 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS}, from, to);
 }
 
 void transitionMip(VkCommandBuffer cmd, const Image& image, uint32_t mip, ImageUse from, ImageUse to) {
-    imageBarrier(cmd, image, {image.aspect(), mip, 1, 0, VK_REMAINING_ARRAY_LAYERS}, from, to);
+    recordImageBarrier(cmd, image, {image.aspect(), mip, 1, 0, VK_REMAINING_ARRAY_LAYERS}, from, to);
 }
 
 void computeWritesVisibleTo(VkCommandBuffer cmd, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {

@@ -55,6 +55,9 @@ inline constexpr ImageUse TransferDst{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_P
                                       VK_ACCESS_2_TRANSFER_WRITE_BIT};
 }  // namespace use
 
+// The barrier from one use to another over `range`, not recorded (the tracker
+// batches these).
+VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to);
 // Whole image (all mips and layers) from one use to another.
 void transition(VkCommandBuffer cmd, const Image& image, ImageUse from, ImageUse to);
 // One mip level (all layers): for building mip chains level by level.

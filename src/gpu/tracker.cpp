@@ -19,35 +19,33 @@ bool sameBarrier(const VkImageMemoryBarrier2& a, const VkImageMemoryBarrier2& b)
 
 }  // namespace
 
-Tracker::Barrier Tracker::advance(History& h, VkImageLayout layout, VkPipelineStageFlags2 stages,
-                                  VkAccessFlags2 access, bool discard) {
+Tracker::Barrier Tracker::advance(History& h, ImageUse use, bool discard) {
+    const auto [layout, stages, access] = use;
     Barrier b;
-    b.dstStages = stages;
-    b.dstAccess = access;
-    b.oldLayout = discard ? VK_IMAGE_LAYOUT_UNDEFINED : h.layout;
-    b.newLayout = layout;
+    b.to = use;
+    b.from.layout = discard ? VK_IMAGE_LAYOUT_UNDEFINED : h.layout;
     const bool writes = (access & kWriteAccess) != 0;
     if (discard || layout != h.layout) {
         // A layout transition is itself a write: it waits for every earlier
         // use, and later uses in other stages must wait for it.
         b.needed = true;
-        b.srcStages = h.writeStages | h.readStages;
-        b.srcAccess = h.writeAccess;
+        b.from.stages = h.writeStages | h.readStages;
+        b.from.access = h.writeAccess;
         h = History{layout, stages, writes ? (access & kWriteAccess) : 0, 0, writes ? 0 : stages,
                     writes ? 0 : access};
         return b;
     }
     if (writes) {
         b.needed = (h.writeStages | h.readStages) != 0;
-        b.srcStages = h.writeStages | h.readStages;
-        b.srcAccess = h.writeAccess;
+        b.from.stages = h.writeStages | h.readStages;
+        b.from.access = h.writeAccess;
         h = History{layout, stages, access & kWriteAccess, 0, 0, 0};
         return b;
     }
     if (h.writeStages != 0 && ((stages & ~h.visibleStages) != 0 || (access & ~h.visibleAccess) != 0)) {
         b.needed = true;
-        b.srcStages = h.writeStages;
-        b.srcAccess = h.writeAccess;
+        b.from.stages = h.writeStages;
+        b.from.access = h.writeAccess;
         h.visibleStages |= stages;
         h.visibleAccess |= access;
     }
@@ -62,16 +60,8 @@ std::vector<Tracker::History>& Tracker::mips(const Image& image) {
 }
 
 void Tracker::addImageBarrier(const Image& image, uint32_t mip, uint32_t count, const Barrier& b) {
-    VkImageMemoryBarrier2 ib{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    ib.srcStageMask = b.srcStages ? b.srcStages : VK_PIPELINE_STAGE_2_NONE;
-    ib.srcAccessMask = b.srcAccess;
-    ib.dstStageMask = b.dstStages;
-    ib.dstAccessMask = b.dstAccess;
-    ib.oldLayout = b.oldLayout;
-    ib.newLayout = b.newLayout;
-    ib.srcQueueFamilyIndex = ib.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    ib.image = image.handle();
-    ib.subresourceRange = {image.aspect(), mip, count, 0, VK_REMAINING_ARRAY_LAYERS};
+    const VkImageMemoryBarrier2 ib =
+        imageBarrier(image, {image.aspect(), mip, count, 0, VK_REMAINING_ARRAY_LAYERS}, b.from, b.to);
     // Neighbouring mips with the same history share one barrier.
     if (!images_.empty()) {
         VkImageMemoryBarrier2& last = images_.back();
@@ -86,7 +76,7 @@ void Tracker::addImageBarrier(const Image& image, uint32_t mip, uint32_t count, 
 Tracker& Tracker::image(const Image& image, ImageUse use, bool discard) {
     std::vector<History>& m = mips(image);
     for (uint32_t i = 0; i < uint32_t(m.size()); ++i) {
-        const Barrier b = advance(m[i], use.layout, use.stages, use.access, discard);
+        const Barrier b = advance(m[i], use, discard);
         if (b.needed) addImageBarrier(image, i, 1, b);
     }
     return *this;
@@ -94,19 +84,19 @@ Tracker& Tracker::image(const Image& image, ImageUse use, bool discard) {
 
 Tracker& Tracker::imageMip(const Image& image, uint32_t mip, ImageUse use, bool discard) {
     std::vector<History>& m = mips(image);
-    const Barrier b = advance(m.at(mip), use.layout, use.stages, use.access, discard);
+    const Barrier b = advance(m.at(mip), use, discard);
     if (b.needed) addImageBarrier(image, mip, 1, b);
     return *this;
 }
 
 Tracker& Tracker::buffer(const Buffer& buffer, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {
-    const Barrier b = advance(bufferHistory_[buffer.handle()], VK_IMAGE_LAYOUT_UNDEFINED, stages, access, false);
+    const Barrier b = advance(bufferHistory_[buffer.handle()], {VK_IMAGE_LAYOUT_UNDEFINED, stages, access}, false);
     if (!b.needed) return *this;
     VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-    bb.srcStageMask = b.srcStages;
-    bb.srcAccessMask = b.srcAccess;
-    bb.dstStageMask = b.dstStages;
-    bb.dstAccessMask = b.dstAccess;
+    bb.srcStageMask = b.from.stages;
+    bb.srcAccessMask = b.from.access;
+    bb.dstStageMask = b.to.stages;
+    bb.dstAccessMask = b.to.access;
     bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     bb.buffer = buffer.handle();
     bb.size = VK_WHOLE_SIZE;

@@ -57,12 +57,9 @@ private:
     };
     struct Barrier {
         bool needed = false;
-        VkPipelineStageFlags2 srcStages = 0, dstStages = 0;
-        VkAccessFlags2 srcAccess = 0, dstAccess = 0;
-        VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED, newLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        ImageUse from{}, to{};  // from.layout is the old layout (UNDEFINED when discarded)
     };
-    static Barrier advance(History& h, VkImageLayout layout, VkPipelineStageFlags2 stages, VkAccessFlags2 access,
-                           bool discard);
+    static Barrier advance(History& h, ImageUse use, bool discard);
     std::vector<History>& mips(const Image& image);
     void addImageBarrier(const Image& image, uint32_t mip, uint32_t count, const Barrier& b);
 
