@@ -122,14 +122,12 @@ void Renderer::uploadLights() {
         for (const auto& [name, mode] : settings_.lightOcclusion)
             if (placed[i].light.name == name) setup.lights[i].shadow.z = uint32_t(mode);
     patchCount_ = 0;
-    settings_.voxelLight.emissionInRadiance = true;
     if (settings_.emitterLights && settings_.voxels > 0) {
         const EmitterPatches patches =
             emitterPatches(scene_, scene::drawItems(scene_, world), settings_.emitterPatches);
         if (patches.complete) {
             setup.lights.insert(setup.lights.end(), patches.lights.begin(), patches.lights.end());
             patchCount_ = uint32_t(patches.lights.size());
-            settings_.voxelLight.emissionInRadiance = patchCount_ == 0;
         } else if (warnings_.empty() || warnings_.back().find("emissive texture") == std::string::npos) {
             warnings_.push_back("an emissive texture cannot be lit as area lights; cones gather the emission");
         }
@@ -207,7 +205,10 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     if (!voxelizer_) return;
     const vxgi::ShadowInputs shadows{*lights_, lightCount_, *views_, targets_->shadowMap, samplers_->shadow.handle(),
                                      settings_.shadows};
-    inject_->record(cmd, tracker_, *volumes_, shadows, settings_.voxelLight, t);
+    // Emitters lit as patches leave their emission out of the voxel radiance.
+    vxgi::VoxelLightSettings light = settings_.voxelLight;
+    light.emissionInRadiance = patchCount_ == 0;
+    inject_->record(cmd, tracker_, *volumes_, shadows, light, t);
     if (feedbackFrame()) {
         // The directional volumes still hold the previous frame's filtered
         // radiance: one bounce from them adds one more bounce of light.
@@ -345,9 +346,7 @@ bool Renderer::applySettings(const RenderSettings& s) {
                        oc.firstSampleVoxels != nc.firstSampleVoxels || oc.clearance != nc.clearance ||
                        s.shadows != settings_.shadows || s.normalOffsetTexels != settings_.normalOffsetTexels ||
                        s.lightOcclusion != settings_.lightOcclusion;
-    const bool derived = settings_.voxelLight.emissionInRadiance;  // set by uploadLights from the scene
     settings_ = s;
-    settings_.voxelLight.emissionInRadiance = derived;
     const uint32_t scopes = 64 + 3 * std::max({n.maxBounces, n.bounces, 1u});
     if (scopes > timers_->capacity()) timers_ = std::make_unique<gpu::GpuTimers>(ctx_, scopes);
     if (light) {

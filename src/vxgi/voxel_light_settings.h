@@ -29,7 +29,7 @@ struct VoxelLightSettings {
     Occlusion occlusion = Occlusion::PerLight;  // global override of each light's mode
     float softKappa = 0.5f;               // soft raycast: nu += (1 - nu) * kappa / t
     float shadowNormalOffset = 1.5f;      // texels
-    bool emissionInRadiance = true;       // false when emitters are lit as area lights (no double counting)
+    bool emissionInRadiance = true;       // the Renderer sets it: false when emitters are lit as area lights
     BounceMode bounceMode = BounceMode::Converge;
     uint32_t bounces = 1;                 // Fixed: bounces per frame (0 = direct only)
     float convergence = 0.005f;           // Converge: stop when sum|dY| / sum Y over voxels is below this
