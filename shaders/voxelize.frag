@@ -15,6 +15,7 @@ layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textu
 layout(push_constant) uniform Push { VoxelizePush pc; };
 
 #include "lib/material.glsl"
+#include "lib/voxel_accumulate.glsl"
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec2 inUV;
@@ -25,10 +26,6 @@ layout(location = 5) flat in vec3 inTri[3];
 
 ivec3 unswizzle(ivec3 p, uint axis) {
     return axis == 0u ? p.zxy : (axis == 1u ? p.yzx : p.xyz);
-}
-
-void add(ivec3 voxel, uint channel, float value) {
-    if (value != 0.0) imageAtomicAdd(accum, voxel + ivec3(0, 0, int(channel * grid.dims.x)), value);
 }
 
 // Float slack (pixels) for the clip: a triangle that only touches the
@@ -85,24 +82,6 @@ void main() {
     int first = max(int(floor(depth.x - 1e-4)), 0), last = min(int(floor(depth.y + 1e-4)), N - 1);
     for (int layer = first; layer <= last; ++layer) {
         ivec3 voxel = unswizzle(ivec3(column, layer), inAxis);
-        if (pc.mode.x == VOXELIZE_DYNAMIC) {
-            if (imageLoad(flags, voxel).r == VOXEL_FLAG_STATIC) continue;
-        } else {
-            imageStore(flags, voxel, uvec4(VOXEL_FLAG_STATIC));
-        }
-        add(voxel, CH_ALBEDO_R, base.r);
-        add(voxel, CH_ALBEDO_G, base.g);
-        add(voxel, CH_ALBEDO_B, base.b);
-        add(voxel, CH_COUNT, 1.0);
-        add(voxel, CH_EMISSION_R, emission.r);
-        add(voxel, CH_EMISSION_G, emission.g);
-        add(voxel, CH_EMISSION_B, emission.b);
-        vec3 n2 = n * n;
-        add(voxel, CH_NORMAL_POS_X, n.x > 0.0 ? n2.x : 0.0);
-        add(voxel, CH_NORMAL_NEG_X, n.x < 0.0 ? n2.x : 0.0);
-        add(voxel, CH_NORMAL_POS_Y, n.y > 0.0 ? n2.y : 0.0);
-        add(voxel, CH_NORMAL_NEG_Y, n.y < 0.0 ? n2.y : 0.0);
-        add(voxel, CH_NORMAL_POS_Z, n.z > 0.0 ? n2.z : 0.0);
-        add(voxel, CH_NORMAL_NEG_Z, n.z < 0.0 ? n2.z : 0.0);
+        accumulateFragment(voxel, pc.mode.x, base.rgb, emission, n);
     }
 }
