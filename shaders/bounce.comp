@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/bounce_pass.h"
 #include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
 
 // One bounce per occupied voxel (paper section IX): the irradiance from six
 // cones over the voxel's normal hemisphere, traced through the filtered
@@ -9,7 +10,8 @@
 // voxel's direct light + emission. Repeating it (re-filtering between) gives
 // L_direct + T L_direct + ... ; reading the previous frame's volumes instead
 // (feedback) adds one bounce per frame at the cost of one.
-layout(local_size_x = BOUNCE_GROUP, local_size_y = BOUNCE_GROUP, local_size_z = BOUNCE_GROUP) in;
+// One invocation per occupied voxel (an entry of the list).
+layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional[6];
@@ -17,18 +19,23 @@ layout(set = 0, binding = BIND_BOUNCE_ACCUM, r32f) uniform readonly image3D accu
 layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D direct;
 layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
 layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { float stats[]; };
+layout(set = 0, binding = BIND_BOUNCE_LIST, std430) readonly buffer List {
+    VoxelListHeader header;
+    uint entries[];
+} list;
 layout(push_constant) uniform Push { BouncePush pc; };
 
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
 #include "lib/cone_trace.glsl"
+#include "lib/voxel_list.glsl"
+#include "lib/voxel_list_dispatch.glsl"
 
-const uint GROUP_SIZE = BOUNCE_GROUP * BOUNCE_GROUP * BOUNCE_GROUP;
+const uint GROUP_SIZE = VOXEL_LIST_GROUP;
 shared vec2 partial[GROUP_SIZE];
 
 vec4 bounced(ivec3 v) {
     vec4 d = imageLoad(direct, v);
-    if (voxelCount(v) <= 0.0) return d;
     vec3 n = voxelNormal(v);
     if (dot(n, n) < 0.5) {  // opposite faces cancelled: use the strongest weight's axis
         vec3 pos, neg;
@@ -47,10 +54,10 @@ vec4 bounced(ivec3 v) {
 }
 
 void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
-    int N = int(grid.dims.x);
+    uint entry = listInvocation();
     vec2 change = vec2(0.0);
-    if (all(lessThan(v, ivec3(N)))) {
+    if (entry < list.header.counts.x) {
+        ivec3 v = unpackVoxel(list.entries[entry]);
         vec4 r = bounced(v);
         if (pc.flags.x != 0u && r.a > 0.0) {
             float before = luminance(imageLoad(outRadiance, v).rgb), after = luminance(r.rgb);
@@ -68,8 +75,7 @@ void main() {
         barrier();
     }
     if (i == 0u) {
-        uvec3 g = gl_WorkGroupID, n = gl_NumWorkGroups;
-        uint group = (g.z * n.y + g.y) * n.x + g.x;
+        uint group = listGroupIndex();
         stats[group * BOUNCE_STATS_FLOATS] = partial[0].x;
         stats[group * BOUNCE_STATS_FLOATS + 1u] = partial[0].y;
     }

@@ -1,20 +1,32 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
 #include "shared/voxelize_pass.h"
 
-// Zeroes every voxel that static geometry did not write, so dynamic geometry
-// can be voxelized afresh without touching static voxels.
-layout(local_size_x = CLEAR_GROUP, local_size_y = CLEAR_GROUP, local_size_z = CLEAR_GROUP) in;
+// Zeroes the voxels that dynamic geometry wrote last frame (the list's dynamic
+// entries): their attributes, and their direct light and radiance, which the
+// per-voxel passes write only for listed voxels. Static voxels stay.
+layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_CLEAR_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CLEAR_ACCUM, r32f) uniform writeonly image3D accum;
-layout(set = 0, binding = BIND_CLEAR_FLAGS, r8ui) uniform readonly uimage3D flags;
+layout(set = 0, binding = BIND_CLEAR_LIST, std430) readonly buffer List {
+    VoxelListHeader header;
+    uint entries[];
+} list;
+layout(set = 0, binding = BIND_CLEAR_DIRECT, rgba16f) uniform writeonly image3D direct;
+layout(set = 0, binding = BIND_CLEAR_RADIANCE, rgba16f) uniform writeonly image3D radiance;
+
+#include "lib/voxel_list.glsl"
+#include "lib/voxel_list_dispatch.glsl"
 
 void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
+    uint i = list.header.counts.y + listInvocation();
+    if (i >= list.header.counts.x) return;
+    ivec3 v = unpackVoxel(list.entries[i]);
     int N = int(grid.dims.x);
-    if (any(greaterThanEqual(v, ivec3(N)))) return;
-    if (imageLoad(flags, v).r == VOXEL_FLAG_STATIC) return;
     for (int c = 0; c < int(VOXEL_CHANNELS); ++c) imageStore(accum, v + ivec3(0, 0, c * N), vec4(0.0));
+    imageStore(direct, v, vec4(0.0));
+    imageStore(radiance, v, vec4(0.0));
 }

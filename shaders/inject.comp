@@ -3,12 +3,15 @@
 #include "shared/scene_data.h"
 #include "shared/inject_pass.h"
 #include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
 
 // Direct light per occupied voxel (paper section VI), visible or not: Lambert
 // radiance rho/pi * E * attenuation * visibility for every light, plus the
 // voxel's emitted radiance. Writes RGBA16F radiance with alpha = opacity (1 for
 // occupied voxels).
-layout(local_size_x = INJECT_GROUP, local_size_y = INJECT_GROUP, local_size_z = INJECT_GROUP) in;
+// One invocation per occupied voxel (an entry of the list); empty voxels keep
+// the zero that clears left.
+layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_INJECT_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_INJECT_ACCUM, r32f) uniform readonly image3D accum;
@@ -16,6 +19,10 @@ layout(set = 0, binding = BIND_INJECT_LIGHTS, std430) readonly buffer Lights { G
 layout(set = 0, binding = BIND_INJECT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
 layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
 layout(set = 0, binding = BIND_INJECT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
+layout(set = 0, binding = BIND_INJECT_LIST, std430) readonly buffer List {
+    VoxelListHeader header;
+    uint entries[];
+} list;
 layout(push_constant) uniform Push { VoxelLightPush pc; };
 
 #include "lib/math.glsl"
@@ -23,16 +30,14 @@ layout(push_constant) uniform Push { VoxelLightPush pc; };
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
 #include "lib/voxel_trace.glsl"
+#include "lib/voxel_list.glsl"
+#include "lib/voxel_list_dispatch.glsl"
 
 
 void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
-    int N = int(grid.dims.x);
-    if (any(greaterThanEqual(v, ivec3(N)))) return;
-    if (voxelCount(v) <= 0.0) {
-        imageStore(outRadiance, v, vec4(0.0));
-        return;
-    }
+    uint entry = listInvocation();
+    if (entry >= list.header.counts.x) return;
+    ivec3 v = unpackVoxel(list.entries[entry]);
     vec3 albedo = voxelAlbedo(v);
     vec3 pos, neg;
     voxelNormalWeights(v, pos, neg);

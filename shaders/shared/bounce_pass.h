@@ -15,16 +15,17 @@ struct BouncePush {
 };
 DVSGI_CHECK_SIZE(BouncePush, 48);
 
-// The bounce's workgroup edge, and what each workgroup writes when asked:
-// the sum over its occupied voxels of |luminance change| and of the new
-// luminance (two floats), so the host can tell when bounces have converged.
-DVSGI_CONST(uint, BOUNCE_GROUP, 4);
+// What each workgroup (VOXEL_LIST_GROUP list entries) writes when asked, at
+// its flat group index: the sum over its voxels of |luminance change| and of
+// the new luminance (two floats), so the host can tell when bounces have
+// converged. Slots of groups not dispatched are zeroed before.
 DVSGI_CONST(uint, BOUNCE_STATS_FLOATS, 2);
 
 DVSGI_CONST(uint, BIND_BOUNCE_ACCUM, 3);
 DVSGI_CONST(uint, BIND_BOUNCE_DIRECT, 4);     // direct light + emission (storage, read)
 DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, read for the change, then written)
 DVSGI_CONST(uint, BIND_BOUNCE_STATS, 6);      // float[BOUNCE_STATS_FLOATS] per workgroup
+DVSGI_CONST(uint, BIND_BOUNCE_LIST, 7);       // occupied-voxel list: one invocation per entry
 
 DVSGI_END
 

@@ -1,5 +1,5 @@
 // Voxel direct light (vxgi/inject.cpp, inject.comp): bindings, push
-// constants and workgroup size; shared by C++ and GLSL.
+// constants (the workgroup is VOXEL_LIST_GROUP entries of the list); shared by C++ and GLSL.
 #ifndef DVSGI_SHARED_INJECT_PASS_H
 #define DVSGI_SHARED_INJECT_PASS_H
 
@@ -22,8 +22,7 @@ DVSGI_CONST(uint, BIND_INJECT_LIGHTS, 2);
 DVSGI_CONST(uint, BIND_INJECT_SHADOW_VIEWS, 3);
 DVSGI_CONST(uint, BIND_INJECT_SHADOW_MAP, 4);
 DVSGI_CONST(uint, BIND_INJECT_RADIANCE, 5);
-
-DVSGI_CONST(uint, INJECT_GROUP, 4);  // 4^3 voxels per workgroup
+DVSGI_CONST(uint, BIND_INJECT_LIST, 6);  // occupied-voxel list: one invocation per entry
 
 DVSGI_END
 

@@ -25,13 +25,14 @@ DVSGI_CONST(uint, BIND_VOX_DRAWS, 1);
 DVSGI_CONST(uint, BIND_VOX_MATERIALS, 2);
 DVSGI_CONST(uint, BIND_VOX_ACCUM, 3);
 DVSGI_CONST(uint, BIND_VOX_FLAGS, 4);
+DVSGI_CONST(uint, BIND_VOX_LIST, 5);  // occupied-voxel list (appended to)
 
-// Dynamic-voxel clear.
+// Dynamic-voxel clear: over the list's dynamic entries (VOXEL_LIST_GROUP per workgroup).
 DVSGI_CONST(uint, BIND_CLEAR_GRID, 0);
 DVSGI_CONST(uint, BIND_CLEAR_ACCUM, 1);
-DVSGI_CONST(uint, BIND_CLEAR_FLAGS, 2);
-
-DVSGI_CONST(uint, CLEAR_GROUP, 4);  // 4^3 voxels per workgroup
+DVSGI_CONST(uint, BIND_CLEAR_LIST, 2);
+DVSGI_CONST(uint, BIND_CLEAR_DIRECT, 3);
+DVSGI_CONST(uint, BIND_CLEAR_RADIANCE, 4);
 
 DVSGI_END
 

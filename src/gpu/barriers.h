@@ -55,6 +55,32 @@ inline constexpr ImageUse TransferDst{VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_P
                                       VK_ACCESS_2_TRANSFER_WRITE_BIT};
 }  // namespace use
 
+// How a pass uses a buffer (buffers have no layout).
+struct BufferUse {
+    VkPipelineStageFlags2 stages;
+    VkAccessFlags2 access;
+};
+
+namespace use {
+inline constexpr BufferUse BufferComputeRead{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                             VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+inline constexpr BufferUse BufferComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                              VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+inline constexpr BufferUse BufferComputeReadWrite{
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+// A compute pass whose dispatch size comes from the buffer (vkCmdDispatchIndirect)
+// and whose shader reads it too.
+inline constexpr BufferUse IndirectComputeRead{
+    VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+    VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+// The voxelizer's fragments appending to a list.
+inline constexpr BufferUse FragmentReadWrite{
+    VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+// vkCmdFillBuffer / vkCmdCopyBuffer destination.
+inline constexpr BufferUse BufferTransferWrite{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+inline constexpr BufferUse HostRead{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT};
+}  // namespace use
+
 // The barrier from one use to another over `range`, not recorded (the tracker
 // batches these).
 VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to);

@@ -34,6 +34,7 @@ public:
     Tracker& image(const Image& image, ImageUse use, bool discard = false);
     Tracker& imageMip(const Image& image, uint32_t mip, ImageUse use, bool discard = false);
     Tracker& buffer(const Buffer& buffer, VkPipelineStageFlags2 stages, VkAccessFlags2 access);
+    Tracker& buffer(const Buffer& b, BufferUse use) { return buffer(b, use.stages, use.access); }
     // Records the barriers declared since the last flush (nothing when none is needed).
     void flush(VkCommandBuffer cmd);
 

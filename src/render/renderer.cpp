@@ -21,6 +21,7 @@
 #include "shared/bounce_pass.h"
 #include "shared/scene_data.h"
 #include "vxgi/aniso_filter.h"
+#include "vxgi/voxel_list.h"
 #include "vxgi/bounce.h"
 #include "vxgi/inject.h"
 #include "vxgi/voxelize.h"
@@ -104,6 +105,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid);
         voxelizer_ = std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
+        list_ = std::make_unique<vxgi::VoxelListPass>(ctx);
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
@@ -194,12 +196,16 @@ void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
 void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     if (voxelizer_) {
+        // The occupied-voxel list holds the static voxels, then this frame's
+        // dynamic ones; the per-voxel passes below run over it.
         if (staticDirty_) {
-            voxelizer_->clearAll(cmd, tracker_, *volumes_, t);
-            voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
+            recordStaticVoxels(cmd);
+        } else {
+            voxelizer_->clearDynamic(cmd, tracker_, *volumes_, t);
+            list_->dropDynamic(cmd, tracker_, *volumes_);
         }
-        voxelizer_->clearDynamic(cmd, tracker_, *volumes_, t);
         voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
+        list_->finish(cmd, tracker_, *volumes_, false);
     }
     shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, targets_->shadowMap, t);
     if (!voxelizer_) return;
@@ -217,6 +223,23 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     }
     inject_->copyToRadiance(cmd, tracker_, *volumes_);
     aniso_->record(cmd, tracker_, *volumes_, t, "voxel filtering");
+}
+
+void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
+    gpu::GpuTimers* t = timers_.get();
+    // Clears every voxel, dynamic ones included: the list restarts empty.
+    voxelizer_->clearAll(cmd, tracker_, *volumes_, t);
+    list_->reset(cmd, tracker_, *volumes_);
+    voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
+    list_->finish(cmd, tracker_, *volumes_, true);
+}
+
+std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
+    if (!voxelizer_) return {};
+    timers_->reset();
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordStaticVoxels(cmd); });
+    staticDirty_ = false;
+    return timers_->results();
 }
 
 void Renderer::recordImage(VkCommandBuffer cmd) {
@@ -270,7 +293,8 @@ FrameStats Renderer::renderFrame() {
     const uint32_t fixed = voxelizer_ && vl.bounceMode == vxgi::BounceMode::Fixed ? vl.bounces : 0;
     if (converge && !bounceStats_)
         bounceStats_ = std::make_unique<gpu::Buffer>(
-            ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(volumes_->grid.n), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+            ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(volumes_->grid.n),
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
             gpu::MemoryUse::Readback, "bounce statistics");
     // Converging takes one submission per bounce (the host reads each one's
     // change); everything else is one command buffer.
@@ -392,6 +416,7 @@ std::vector<MemoryItem> Renderer::memory() const {
         uint64_t directional = 0;
         for (const gpu::Image& d : volumes_->directional) directional += d.memorySize();
         items.push_back({"directional volumes", directional});
+        items.push_back({"occupied-voxel list", volumes_->list.size()});
     }
     return items;
 }

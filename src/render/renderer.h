@@ -80,6 +80,7 @@ class GatherPass;
 }  // namespace dvsgi::render
 namespace dvsgi::vxgi {
 class Voxelizer;
+class VoxelListPass;
 class InjectPass;
 class AnisoFilterPass;
 class BouncePass;
@@ -108,7 +109,11 @@ public:
     scene::Scene& scene() { return scene_; }
     void sceneChanged();
     void setTime(float seconds);
-    void markStaticDirty() { staticDirty_ = true; }  // e.g. to time static voxelization
+    void markStaticDirty() { staticDirty_ = true; }
+    // Re-runs static voxelization now, in its own submission (what the next
+    // frame does after markStaticDirty), and returns its passes' GPU times:
+    // how the bench times it beside ordinary frames. Empty without voxels.
+    std::vector<gpu::TimerResult> revoxelizeStatic();
 
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
     const vxgi::Voxelizer* voxelizer() const { return voxelizer_.get(); }
@@ -130,6 +135,7 @@ private:
     void updateFrameConstants();
     void uploadLights();
     void recordVoxels(VkCommandBuffer cmd);
+    void recordStaticVoxels(VkCommandBuffer cmd);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
@@ -156,6 +162,7 @@ private:
     std::unique_ptr<vxgi::VoxelVolumes> volumes_;
     std::unique_ptr<vxgi::Voxelizer> voxelizer_;
     std::unique_ptr<VoxelViewPass> voxelView_;
+    std::unique_ptr<vxgi::VoxelListPass> list_;
     std::unique_ptr<vxgi::InjectPass> inject_;
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;

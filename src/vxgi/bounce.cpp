@@ -1,11 +1,14 @@
 #include "vxgi/bounce.h"
 
 #include <array>
+#include <cstddef>
 
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "gpu/tracker.h"
 #include "shared/bounce_pass.h"
+#include "shared/voxel_list_pass.h"
+#include "vxgi/voxel_list.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::vxgi {
@@ -28,17 +31,15 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_BOUNCE_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_BOUNCE_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                       {sh::BIND_BOUNCE_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_BOUNCE_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
 }
 
-uint32_t BouncePass::statsFloats(uint32_t n) {
-    const uint64_t groups = gpu::groupCount(n, sh::BOUNCE_GROUP);
-    return uint32_t(groups * groups * groups * sh::BOUNCE_STATS_FLOATS);
-}
+uint32_t BouncePass::statsFloats(uint32_t n) { return voxelListMaxGroups(n) * sh::BOUNCE_STATS_FLOATS; }
 
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
                         const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
@@ -47,7 +48,13 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
     // Read and written: the statistics compare each voxel with its value before.
     tracker.image(v.radiance, gpu::use::ComputeReadWrite);
-    if (stats) tracker.buffer(*stats, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    tracker.buffer(v.list, gpu::use::IndirectComputeRead);
+    if (stats) {
+        // Only the dispatched groups write their slots: zero them all first.
+        tracker.buffer(*stats, gpu::use::BufferTransferWrite).flush(cmd);
+        vkCmdFillBuffer(cmd, stats->handle(), 0, VK_WHOLE_SIZE, 0);
+        tracker.buffer(*stats, gpu::use::BufferComputeWrite);
+    }
     tracker.flush(cmd);
     std::array<VkImageView, 6> dirs;
     for (uint32_t d = 0; d < 6; ++d) dirs[d] = v.directional[d].view();
@@ -59,12 +66,12 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageImage(sh::BIND_BOUNCE_DIRECT, v.direct.view())
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
+        .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
         .push(ctx_, cmd, pipeline_);
     const sh::BouncePush push{gpuCone(cone, v.grid), glm::uvec4(stats ? 1u : 0u, 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    const uint32_t groups = gpu::groupCount(v.grid.n, sh::BOUNCE_GROUP);
-    vkCmdDispatch(cmd, groups, groups, groups);
-    if (stats) tracker.buffer(*stats, VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT).flush(cmd);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+    if (stats) tracker.buffer(*stats, gpu::use::HostRead).flush(cmd);
 }
 
 }  // namespace dvsgi::vxgi

@@ -1,9 +1,13 @@
 #include "vxgi/inject.h"
 
+#include <cstddef>
+
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "gpu/tracker.h"
 #include "shared/inject_pass.h"
+#include "shared/voxel_list_pass.h"
+#include "vxgi/voxel_list.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::vxgi {
@@ -26,7 +30,8 @@ InjectPass::InjectPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_INJECT_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                       {sh::BIND_INJECT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_INJECT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_INJECT_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelLightPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kInject), layout, "voxel inject");
@@ -37,7 +42,8 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     gpu::GpuTimerScope timer(timers, cmd, "voxel direct light");
     tracker.image(v.accum, gpu::use::ComputeRead)
         .image(s.shadowMap, gpu::use::ShaderRead)
-        .image(v.direct, gpu::use::ComputeWrite, true)
+        .image(v.direct, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
+        .buffer(v.list, gpu::use::IndirectComputeRead)
         .flush(cmd);
     gpu::bind(cmd, pipeline_);
     gpu::Descriptors()
@@ -47,14 +53,14 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_INJECT_SHADOW_VIEWS, s.views.handle())
         .sampledImage(sh::BIND_INJECT_SHADOW_MAP, s.shadowMap.view(), s.shadowSampler)
         .storageImage(sh::BIND_INJECT_RADIANCE, v.direct.view())
+        .storageBuffer(sh::BIND_INJECT_LIST, v.list.handle())
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelLightPush push{
         glm::uvec4(s.lightCount, settings.normalWeighted ? 1u : 0u, uint32_t(settings.occlusion),
                    s.shadowsRendered ? 1u : 0u),
         glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f, 0.0f)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    const uint32_t groups = gpu::groupCount(v.grid.n, sh::INJECT_GROUP);
-    vkCmdDispatch(cmd, groups, groups, groups);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }
 
 void InjectPass::copyToRadiance(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {

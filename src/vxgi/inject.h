@@ -28,7 +28,7 @@ struct ShadowInputs {
 class InjectPass {
 public:
     explicit InjectPass(const gpu::Context& ctx);
-    // Reads the attributes, writes `direct` whole.
+    // Reads the list and the attributes, writes `direct` of the listed (occupied) voxels.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, const ShadowInputs& shadows,
                 const VoxelLightSettings& settings, gpu::GpuTimers* timers) const;
     // Copies `direct` into `radiance`: the start of the bounce iteration.

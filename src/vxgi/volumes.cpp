@@ -8,6 +8,8 @@
 #include "gpu/context.h"
 #include "gpu/transfer.h"
 #include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
+#include "vxgi/voxel_list.h"
 
 namespace dvsgi::vxgi {
 
@@ -54,6 +56,7 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n) {
         {"voxel direct light", "R16G16B16A16_SFLOAT", n3 * 8},
         {"radiance", "R16G16B16A16_SFLOAT", n3 * 8},
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
+        {"occupied-voxel list", "uint32 buffer", voxelListBytes(n)},
     };
 }
 
@@ -97,8 +100,18 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g)
     const sh::VoxelGrid gpuGrid{glm::vec4(g.origin, g.voxelSize), glm::uvec4(g.n, sh::VOXEL_CHANNELS, directionalMips, 0)};
     gridBuffer = gpu::createBuffer(ctx, &gpuGrid, sizeof(gpuGrid), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "voxel grid");
 
-    // Everything starts zeroed and stays in GENERAL from here on.
+    list = gpu::Buffer(ctx, voxelListBytes(g.n),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                           VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                       gpu::MemoryUse::Device, "occupied-voxel list");
+
+    // Everything starts zeroed and stays in GENERAL from here on; the list
+    // starts empty with its capacity written once.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        sh::VoxelListHeader header{};
+        header.counts.z = g.n * g.n * g.n;
+        header.allGroups.z = header.dynamicGroups.z = 1;
+        vkCmdUpdateBuffer(cmd, list.handle(), 0, sizeof(header), &header);
         const VkClearColorValue zero{};
         for (const gpu::Image* img : all()) {
             gpu::transition(cmd, *img, gpu::use::Undefined, gpu::use::TransferDst);

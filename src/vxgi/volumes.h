@@ -48,6 +48,9 @@ public:
     gpu::Image radiance;  // RGBA16F, N^3: direct light + emission (+ bounces), a = opacity
     std::array<gpu::Image, 6> directional;  // RGBA16F, (N/2)^3 + mips; order -X +X -Y +Y -Z +Z
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid
+    // The occupied-voxel list (shared/voxel_list_pass.h): header, then up to
+    // N^3 packed coordinates. Storage, indirect-dispatch arguments, fills.
+    gpu::Buffer list;
     // Every volume, for code that handles them all alike. They start zeroed,
     // in gpu::use::ComputeReadWrite.
     std::vector<const gpu::Image*> all() const;

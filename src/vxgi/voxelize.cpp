@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "gpuscene/scene_gpu.h"
+#include "shared/voxel_list_pass.h"
 #include "shared/voxelize_pass.h"
+#include "vxgi/voxel_list.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::vxgi {
@@ -48,7 +51,8 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
                        {sh::BIND_VOX_DRAWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
                        {sh::BIND_VOX_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
                        {sh::BIND_VOX_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-                       {sh::BIND_VOX_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                       {sh::BIND_VOX_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
+                       {sh::BIND_VOX_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::VoxelizePush);
     layout.pushConstantStages = vgf;
@@ -58,39 +62,53 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
     gpu::LayoutDesc clearLayout;
     clearLayout.bindings = {{sh::BIND_CLEAR_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                             {sh::BIND_CLEAR_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                            {sh::BIND_CLEAR_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                            {sh::BIND_CLEAR_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                            {sh::BIND_CLEAR_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                            {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
 }
 
 void Voxelizer::clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                          gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "clear all voxels");
-    tracker.image(v.accum, gpu::use::ClearGeneral).image(v.flags, gpu::use::ClearGeneral).flush(cmd);
+    // Direct light and radiance too: the per-voxel passes write only occupied
+    // voxels, so voxels the new static geometry leaves empty must read zero.
+    const gpu::Image* cleared[] = {&v.accum, &v.flags, &v.direct, &v.radiance};
+    for (const gpu::Image* img : cleared) tracker.image(*img, gpu::use::ClearGeneral, true);
+    tracker.flush(cmd);
     const VkClearColorValue zero{};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(cmd, v.accum.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-    vkCmdClearColorImage(cmd, v.flags.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+    for (const gpu::Image* img : cleared)
+        vkCmdClearColorImage(cmd, img->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
 }
 
 void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                              gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "clear dynamic voxels");
-    tracker.image(v.accum, gpu::use::ComputeReadWrite).image(v.flags, gpu::use::ComputeReadWrite).flush(cmd);
+    tracker.image(v.accum, gpu::use::ComputeWrite)
+        .image(v.direct, gpu::use::ComputeWrite)
+        .image(v.radiance, gpu::use::ComputeWrite)
+        .buffer(v.list, gpu::use::IndirectComputeRead)
+        .flush(cmd);
     gpu::bind(cmd, clear_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_CLEAR_GRID, v.gridBuffer.handle())
         .storageImage(sh::BIND_CLEAR_ACCUM, v.accum.view())
-        .storageImage(sh::BIND_CLEAR_FLAGS, v.flags.view())
+        .storageBuffer(sh::BIND_CLEAR_LIST, v.list.handle())
+        .storageImage(sh::BIND_CLEAR_DIRECT, v.direct.view())
+        .storageImage(sh::BIND_CLEAR_RADIANCE, v.radiance.view())
         .push(ctx_, cmd, clear_);
-    const uint32_t groups = gpu::groupCount(v.grid.n, sh::CLEAR_GROUP);
-    vkCmdDispatch(cmd, groups, groups, groups);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, dynamicGroups));
 }
 
 void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                          const VoxelVolumes& v, VoxelizeMode mode, gpu::GpuTimers* timers) const {
     const bool dynamic = mode == VoxelizeMode::Dynamic;
     gpu::GpuTimerScope timer(timers, cmd, dynamic ? "voxelize dynamic" : "voxelize static");
-    tracker.image(v.accum, gpu::use::VoxelizeReadWrite).image(v.flags, gpu::use::VoxelizeReadWrite).flush(cmd);
+    tracker.image(v.accum, gpu::use::VoxelizeReadWrite)
+        .image(v.flags, gpu::use::VoxelizeReadWrite)
+        .buffer(v.list, gpu::use::FragmentReadWrite)
+        .flush(cmd);
     const uint32_t n = v.grid.n;
     const VkRect2D area{{0, 0}, {n, n}};
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -104,6 +122,7 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpusc
         .storageBuffer(sh::BIND_VOX_MATERIALS, scene.materials.handle())
         .storageImage(sh::BIND_VOX_ACCUM, v.accum.view())
         .storageImage(sh::BIND_VOX_FLAGS, v.flags.view())
+        .storageBuffer(sh::BIND_VOX_LIST, v.list.handle())
         .push(ctx_, cmd, voxelize_);
     scene.bindGeometry(cmd, voxelize_.layout());
     const VkViewport viewport{0, 0, float(n), float(n), 0, 1};

@@ -24,13 +24,16 @@ public:
     // the geometry-shader dilation (only when the device has it).
     Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative);
 
-    // Zeroes attributes and flags: the start of a static re-voxelization.
+    // Zeroes attributes, flags, direct light and radiance: the start of a
+    // static re-voxelization (the occupied-voxel list is reset beside it).
     void clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                   gpu::GpuTimers* timers) const;
-    // Zeroes the voxels not flagged static.
+    // Zeroes the voxels of the list's dynamic entries (what dynamic geometry
+    // wrote last frame); VoxelListPass::dropDynamic then forgets them.
     void clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                       gpu::GpuTimers* timers) const;
-    // Voxelizes the static or the dynamic draws of the scene.
+    // Voxelizes the static or the dynamic draws of the scene, appending newly
+    // occupied voxels to the list (VoxelListPass::finish then counts them).
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
     bool hardwareConservative() const { return hardware_; }

@@ -7,7 +7,9 @@
 
 #include "gpu/barriers.h"
 #include "gpu/context.h"
+#include "gpu/tracker.h"
 #include "gpu/transfer.h"
+#include "vxgi/voxel_list.h"
 #include "gpu_fixture.h"
 
 namespace dvsgi::test {
@@ -40,6 +42,10 @@ void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume) {
 void uploadAccum(const vxgi::VoxelVolumes& volumes, const AccumVolume& accum) {
     gpu::uploadImage(context(), volumes.accum, accum.data.data(), accum.data.size() * sizeof(float),
                      gpu::use::ComputeReadWrite);
+    // The per-voxel passes run over the occupied-voxel list: rebuild it from the counts.
+    const vxgi::VoxelListPass list(context());
+    gpu::Tracker tracker = volumeTracker(volumes);
+    context().submitAndWait([&](VkCommandBuffer cmd) { list.rebuild(cmd, tracker, volumes); });
 }
 
 AccumVolume readAccum(const vxgi::VoxelVolumes& volumes) {

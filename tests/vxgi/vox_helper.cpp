@@ -28,20 +28,25 @@ VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes) {
 }
 
 VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid)
-    : sceneGpu(context(), scene), voxelizer(context(), sceneGpu, false), volumes(context(), grid), tracker(volumeTracker(volumes)) {}
+    : sceneGpu(context(), scene), voxelizer(context(), sceneGpu, false), list(context()), volumes(context(), grid), tracker(volumeTracker(volumes)) {}
 
 void VoxelRig::fullVoxelize() {
     context().submitAndWait([&](VkCommandBuffer cmd) {
         voxelizer.clearAll(cmd, tracker, volumes, nullptr);
+        list.reset(cmd, tracker, volumes);
         voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
+        list.finish(cmd, tracker, volumes, true);
         voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Dynamic, nullptr);
+        list.finish(cmd, tracker, volumes, false);
     });
 }
 
 void VoxelRig::dynamicFrame() {
     context().submitAndWait([&](VkCommandBuffer cmd) {
         voxelizer.clearDynamic(cmd, tracker, volumes, nullptr);
+        list.dropDynamic(cmd, tracker, volumes);
         voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Dynamic, nullptr);
+        list.finish(cmd, tracker, volumes, false);
     });
 }
 

@@ -12,6 +12,7 @@
 #include "scene/scene.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxel_list.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::test {
@@ -36,13 +37,14 @@ VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes);
 // for one grid: what the dynamic tests drive frame by frame.
 struct VoxelRig {
     VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid);
-    void fullVoxelize();       // clearAll + static + dynamic, as after a load
-    void dynamicFrame();       // clearDynamic + dynamic
+    void fullVoxelize();       // clearAll + static + dynamic, as after a load (with the list)
+    void dynamicFrame();       // clearDynamic + dynamic, as the Renderer's later frames
     void updateTransforms(const scene::Scene& scene);  // after moving nodes
     VoxelReadback read() const { return readVoxels(volumes); }
 
     gpuscene::SceneGpu sceneGpu;
     vxgi::Voxelizer voxelizer;
+    vxgi::VoxelListPass list;
     vxgi::VoxelVolumes volumes;
     gpu::Tracker tracker;
 };
