@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <vulkan/vulkan.h>
 
+#include "bench/bandwidth_copy.h"
+#include "bench_efficiency.h"
 #include "bench_measurement.h"
 #include "gpu/context.h"
 #include "image/image_io.h"
@@ -98,19 +100,6 @@ nlohmann::json deviceJson(const gpu::Context& ctx) {
             {"conservative_rasterization", ctx.features.conservativeRaster}};
 }
 
-// Static and dynamic triangles as the renderer splits them: a draw is dynamic
-// when its node or any ancestor is.
-void countTriangles(const scene::Scene& s, uint64_t& staticTris, uint64_t& dynamicTris) {
-    staticTris = dynamicTris = 0;
-    for (const scene::DrawItem& it : scene::drawItems(s, scene::worldMatrices(s))) {
-        bool dynamic = false;
-        for (int n = it.node; n >= 0 && size_t(n) < s.nodes.size(); n = s.nodes[size_t(n)].parent)
-            dynamic = dynamic || s.nodes[size_t(n)].dynamic;
-        const uint64_t tris = s.primitives[it.primitive].indices.size() / 3;
-        (dynamic ? dynamicTris : staticTris) += tris;
-    }
-}
-
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -118,8 +107,9 @@ double msSince(Clock::time_point start) {
 // Renders warm-up frames, then `frames` measured frames, each with static
 // voxelization forced so every frame reports "voxelize static". Throws on any
 // failure (e.g. out of device memory); the caller records it.
-void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o, uint32_t warmup,
-             uint32_t frames, double maxSeconds, Measurement& m, std::vector<std::string>& seenWarnings) {
+void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeometry& geometry, const RenderOptions& o,
+             uint32_t warmup, uint32_t frames, double maxSeconds, Measurement& m,
+             std::vector<std::string>& seenWarnings) {
     const auto setupStart = Clock::now();
     render::Renderer renderer(ctx, scene, o.settings);
     const double setupMs = msSince(setupStart);
@@ -149,6 +139,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
     const double warmupMs = msSince(warmStart);
 
     const auto measureStart = Clock::now();
+    uint32_t bounces = 0;
     for (uint32_t i = 0; i < frames; ++i, ++frame) {
         // --bench-max-seconds: stop early (after at least one frame) on slow devices.
         if (i > 0 && maxSeconds > 0.0 && msSince(measureStart) > maxSeconds * 1000.0) break;
@@ -160,8 +151,10 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
         m.wallMs.push_back(msSince(start));
         m.frameMs.push_back(stats.gpuMs);
         for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);
+        bounces = stats.bounces;
     }
     m.frames = uint32_t(m.frameMs.size());
+    modelTraffic(ctx, renderer, geometry, bounces, m);
     m.detail["frames_requested"] = frames;
 
     nlohmann::json memory = nlohmann::json::object();
@@ -185,7 +178,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
     }
 }
 
-nlohmann::json measurementJson(const Measurement& m) {
+nlohmann::json measurementJson(const Measurement& m, double copyGbps) {
     nlohmann::json j = {{"scene", m.scene}, {"file", m.file}, {"voxels", m.voxels}, {"status", m.status}};
     if (!m.variant.empty()) j["variant"] = m.variant;
     if (!m.error.empty()) j["error"] = m.error;
@@ -202,11 +195,13 @@ nlohmann::json measurementJson(const Measurement& m) {
         nlohmann::json p = summaryJson(summarize(s), s);
         p["name"] = name;
         p["count"] = s.size();  // < frames: the pass did not run in every frame
+        addEfficiencyJson(m, name, summarize(s).median, copyGbps, p);
         passes.push_back(p);
     }
     j["passes"] = passes;
     j["frame_gpu"] = summaryJson(summarize(m.frameMs), m.frameMs);
     j["frame_wall"] = summaryJson(summarize(m.wallMs), m.wallMs);
+    addTrafficJson(m, copyGbps, j);
     return j;
 }
 
@@ -359,11 +354,25 @@ int runBench(const RenderOptions& options) {
 
     std::fprintf(stderr, "dvsgi bench: %s, %ux%u, %u warm-up + %u measured frame(s) per measurement\n",
                  ctx.deviceName.c_str(), o.settings.width, o.settings.height, warmup, frames);
+    // Once per run, before any measurement: the yardstick of the efficiency table.
+    double copyGbps = 0.0;
+    try {
+        const bench::CopyBandwidth copy = bench::measureCopyBandwidth(ctx, bench::copyBandwidthBytes(ctx), 5);
+        copyGbps = copy.gbps;
+        out["device"]["copy_bandwidth_gbps"] = copy.gbps;
+        out["device"]["copy_bandwidth"] = copyBandwidthJson(copy);
+        std::fprintf(stderr, "copy bandwidth: %.2f GB/s (%llu MiB copied, median of %u: %.3f ms)\n", copy.gbps,
+                     (unsigned long long)(copy.bufferBytes >> 20), copy.repetitions, copy.medianMs);
+    } catch (const std::exception& e) {
+        out["device"]["copy_bandwidth_gbps"] = nullptr;
+        out["device"]["copy_bandwidth"] = {{"error", e.what()}};
+        std::fprintf(stderr, "warning: copy bandwidth not measured: %s\n", e.what());
+    }
 
     std::vector<Measurement> results;
     auto writeResults = [&] {
         nlohmann::json list = nlohmann::json::array();
-        for (const Measurement& m : results) list.push_back(measurementJson(m));
+        for (const Measurement& m : results) list.push_back(measurementJson(m, copyGbps));
         out["measurements"] = list;
         out["validation_errors"] = ctx.validationErrors();
         writeJson(o.benchOut, out);
@@ -408,8 +417,7 @@ int runBench(const RenderOptions& options) {
         }
         if (!skipReason.empty()) std::fprintf(stderr, "warning: skipping %s: %s\n", bs.name.c_str(), skipReason.c_str());
 
-        uint64_t staticTris = 0, dynamicTris = 0;
-        if (skipReason.empty()) countTriangles(scene, staticTris, dynamicTris);
+        const SceneGeometry geometry = skipReason.empty() ? sceneGeometry(scene) : SceneGeometry{};
 
         for (uint32_t n : resolutions)
         for (const Variant& variant : variants) {
@@ -432,11 +440,11 @@ int runBench(const RenderOptions& options) {
             RenderOptions mo = o;
             mo.settings.voxels = n;
             variant.apply(mo);
-            m.staticTriangles = staticTris;
-            m.dynamicTriangles = dynamicTris;
+            m.staticTriangles = geometry.staticTriangles;
+            m.dynamicTriangles = geometry.dynamicTriangles;
             const auto start = Clock::now();
             try {
-                measure(ctx, scene, mo, warmup, frames, o.benchMaxSeconds, m, seenWarnings);
+                measure(ctx, scene, geometry, mo, warmup, frames, o.benchMaxSeconds, m, seenWarnings);
                 m.status = "ok";
                 m.detail["scene_load_ms"] = loadMs;
                 ++ok;
@@ -464,8 +472,12 @@ int runBench(const RenderOptions& options) {
     writeResults();
 
     if (!o.quiet) {
+        char copy[64] = "copy bandwidth not measured";
+        if (copyGbps > 0.0) std::snprintf(copy, sizeof copy, "copy bandwidth %.2f GB/s", copyGbps);
         printTable(results, "dvsgi bench, " + ctx.deviceName + ", " + std::to_string(o.settings.width) + "x" +
-                                std::to_string(o.settings.height) + ", " + out["date"].get<std::string>());
+                                std::to_string(o.settings.height) + ", " + out["date"].get<std::string>() + ", " +
+                                copy);
+        printEfficiencyTable(results, copyGbps);
         std::printf("\nwrote %s\n", o.benchOut.c_str());
     }
     if (ctx.validationErrors() > 0) {

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/bytes_model.h"
+
 namespace dvsgi::app {
 
 // Median, minimum, maximum and mean of a list of samples.
@@ -57,6 +59,11 @@ struct Measurement {
     uint64_t staticTriangles = 0, dynamicTriangles = 0;
     uint64_t memoryBytes = 0;
     nlohmann::json detail;  // grid, memory items, setup times
+    // The bytes model (bench_efficiency.h), filled after the measured frames.
+    bool counted = false;  // voxels counted (a measurement with voxels)
+    uint64_t occupiedVoxels = 0, dynamicVoxels = 0;
+    bench::ModelInputs modelInputs;
+    std::vector<bench::PassTraffic> traffic;
 };
 
 }  // namespace dvsgi::app
