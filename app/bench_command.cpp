@@ -361,8 +361,8 @@ int runBench(const RenderOptions& options) {
         copyGbps = copy.gbps;
         out["device"]["copy_bandwidth_gbps"] = copy.gbps;
         out["device"]["copy_bandwidth"] = copyBandwidthJson(copy);
-        std::fprintf(stderr, "copy bandwidth: %.2f GB/s (%llu MiB copied, median of %u: %.3f ms)\n", copy.gbps,
-                     (unsigned long long)(copy.bufferBytes >> 20), copy.repetitions, copy.medianMs);
+        std::fprintf(stderr, "copy bandwidth: %.2f GB/s (%llu MiB buffer read and written, median of %u: %.3f ms)\n",
+                     copy.gbps, (unsigned long long)(copy.bufferBytes >> 20), copy.repetitions, copy.medianMs);
     } catch (const std::exception& e) {
         out["device"]["copy_bandwidth_gbps"] = nullptr;
         out["device"]["copy_bandwidth"] = {{"error", e.what()}};

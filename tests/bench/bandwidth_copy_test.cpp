@@ -24,9 +24,11 @@ TEST_F(BandwidthCopy, CopiesTheRequestedBytes) {
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const gpu::Buffer src = gpu::createBuffer(context(), pattern.data(), words * 4, usage, "copy test source");
     const std::vector<uint32_t> zeros(words + 4, 0u);
-    const gpu::Buffer dst = gpu::createBuffer(context(), zeros.data(), zeros.size() * 4, usage, "copy test destination");
+    const gpu::Buffer dst =
+        gpu::createBuffer(context(), zeros.data(), zeros.size() * 4, usage, "copy test destination");
     const bench::BandwidthCopyPass pass(context());
-    context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, src, dst, VkDeviceSize(words) * 4, nullptr, ""); });
+    context().submitAndWait(
+        [&](VkCommandBuffer cmd) { pass.record(cmd, src, dst, VkDeviceSize(words) * 4, nullptr, ""); });
     const std::vector<uint8_t> bytes = gpu::readbackBuffer(context(), dst);
     std::vector<uint32_t> got(bytes.size() / 4);
     std::memcpy(got.data(), bytes.data(), bytes.size());
