@@ -13,6 +13,9 @@
 #include <nlohmann/json.hpp>
 #include <vulkan/vulkan.h>
 
+#include "bench/bandwidth_copy.h"
+#include "bench_efficiency.h"
+#include "bench_measurement.h"
 #include "gpu/context.h"
 #include "image/image_io.h"
 #include "progress.h"
@@ -34,56 +37,9 @@ struct BenchScene {
     std::string path;
 };
 
-// Median, minimum, maximum and mean of a list of samples.
-struct Summary {
-    double median = 0.0, min = 0.0, max = 0.0, mean = 0.0;
-};
-
-Summary summarize(std::vector<double> v) {
-    Summary s;
-    if (v.empty()) return s;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    s.min = v.front();
-    s.max = v.back();
-    double sum = 0.0;
-    for (double x : v) sum += x;
-    s.mean = sum / double(n);
-    return s;
-}
-
 nlohmann::json summaryJson(const Summary& s, const std::vector<double>& samples) {
     return {{"median_ms", s.median}, {"min_ms", s.min}, {"max_ms", s.max}, {"mean_ms", s.mean}, {"samples_ms", samples}};
 }
-
-// Per-pass samples in the order the passes first appeared, so passes added to
-// the renderer later show up without changes here.
-struct PassSamples {
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> samples;
-    void add(const std::string& name, double ms) {
-        auto [it, inserted] = samples.try_emplace(name);
-        if (inserted) order.push_back(name);
-        it->second.push_back(ms);
-    }
-};
-
-struct Measurement {
-    std::string scene;
-    std::string file;
-    uint32_t voxels = 0;
-    std::string variant;  // "" = defaults; else what differs (Tables III and V)
-    std::string status;  // "ok", "failed", "skipped"
-    std::string error;
-    uint32_t frames = 0;
-    PassSamples passes;
-    std::vector<double> frameMs;  // the whole frame ("frame" timer)
-    std::vector<double> wallMs;   // host time of renderFrame (record, submit, wait)
-    uint64_t staticTriangles = 0, dynamicTriangles = 0;
-    uint64_t memoryBytes = 0;
-    nlohmann::json detail;  // grid, memory items, setup times
-};
 
 std::string utcNow() {
     const std::time_t t = std::time(nullptr);
@@ -144,19 +100,6 @@ nlohmann::json deviceJson(const gpu::Context& ctx) {
             {"conservative_rasterization", ctx.features.conservativeRaster}};
 }
 
-// Static and dynamic triangles as the renderer splits them: a draw is dynamic
-// when its node or any ancestor is.
-void countTriangles(const scene::Scene& s, uint64_t& staticTris, uint64_t& dynamicTris) {
-    staticTris = dynamicTris = 0;
-    for (const scene::DrawItem& it : scene::drawItems(s, scene::worldMatrices(s))) {
-        bool dynamic = false;
-        for (int n = it.node; n >= 0 && size_t(n) < s.nodes.size(); n = s.nodes[size_t(n)].parent)
-            dynamic = dynamic || s.nodes[size_t(n)].dynamic;
-        const uint64_t tris = s.primitives[it.primitive].indices.size() / 3;
-        (dynamic ? dynamicTris : staticTris) += tris;
-    }
-}
-
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -164,8 +107,9 @@ double msSince(Clock::time_point start) {
 // Renders warm-up frames, then `frames` measured frames, each with static
 // voxelization forced so every frame reports "voxelize static". Throws on any
 // failure (e.g. out of device memory); the caller records it.
-void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o, uint32_t warmup,
-             uint32_t frames, double maxSeconds, Measurement& m, std::vector<std::string>& seenWarnings) {
+void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeometry& geometry, const RenderOptions& o,
+             uint32_t warmup, uint32_t frames, double maxSeconds, Measurement& m,
+             std::vector<std::string>& seenWarnings) {
     const auto setupStart = Clock::now();
     render::Renderer renderer(ctx, scene, o.settings);
     const double setupMs = msSince(setupStart);
@@ -195,6 +139,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
     const double warmupMs = msSince(warmStart);
 
     const auto measureStart = Clock::now();
+    uint32_t bounces = 0;
     for (uint32_t i = 0; i < frames; ++i, ++frame) {
         // --bench-max-seconds: stop early (after at least one frame) on slow devices.
         if (i > 0 && maxSeconds > 0.0 && msSince(measureStart) > maxSeconds * 1000.0) break;
@@ -208,8 +153,10 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
         m.wallMs.push_back(msSince(start));
         m.frameMs.push_back(stats.gpuMs);
         for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);
+        bounces = stats.bounces;
     }
     m.frames = uint32_t(m.frameMs.size());
+    modelTraffic(ctx, renderer, geometry, bounces, m);
     m.detail["frames_requested"] = frames;
 
     nlohmann::json memory = nlohmann::json::object();
@@ -233,7 +180,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const RenderOpt
     }
 }
 
-nlohmann::json measurementJson(const Measurement& m) {
+nlohmann::json measurementJson(const Measurement& m, double copyGbps) {
     nlohmann::json j = {{"scene", m.scene}, {"file", m.file}, {"voxels", m.voxels}, {"status", m.status}};
     if (!m.variant.empty()) j["variant"] = m.variant;
     if (!m.error.empty()) j["error"] = m.error;
@@ -250,11 +197,13 @@ nlohmann::json measurementJson(const Measurement& m) {
         nlohmann::json p = summaryJson(summarize(s), s);
         p["name"] = name;
         p["count"] = s.size();  // < frames: the pass did not run in every frame
+        addEfficiencyJson(m, name, summarize(s).median, copyGbps, p);
         passes.push_back(p);
     }
     j["passes"] = passes;
     j["frame_gpu"] = summaryJson(summarize(m.frameMs), m.frameMs);
     j["frame_wall"] = summaryJson(summarize(m.wallMs), m.wallMs);
+    addTrafficJson(m, copyGbps, j);
     return j;
 }
 
@@ -407,11 +356,25 @@ int runBench(const RenderOptions& options) {
 
     std::fprintf(stderr, "dvsgi bench: %s, %ux%u, %u warm-up + %u measured frame(s) per measurement\n",
                  ctx.deviceName.c_str(), o.settings.width, o.settings.height, warmup, frames);
+    // Once per run, before any measurement: the yardstick of the efficiency table.
+    double copyGbps = 0.0;
+    try {
+        const bench::CopyBandwidth copy = bench::measureCopyBandwidth(ctx, bench::copyBandwidthBytes(ctx), 5);
+        copyGbps = copy.gbps;
+        out["device"]["copy_bandwidth_gbps"] = copy.gbps;
+        out["device"]["copy_bandwidth"] = copyBandwidthJson(copy);
+        std::fprintf(stderr, "copy bandwidth: %.2f GB/s (%llu MiB buffer read and written, median of %u: %.3f ms)\n",
+                     copy.gbps, (unsigned long long)(copy.bufferBytes >> 20), copy.repetitions, copy.medianMs);
+    } catch (const std::exception& e) {
+        out["device"]["copy_bandwidth_gbps"] = nullptr;
+        out["device"]["copy_bandwidth"] = {{"error", e.what()}};
+        std::fprintf(stderr, "warning: copy bandwidth not measured: %s\n", e.what());
+    }
 
     std::vector<Measurement> results;
     auto writeResults = [&] {
         nlohmann::json list = nlohmann::json::array();
-        for (const Measurement& m : results) list.push_back(measurementJson(m));
+        for (const Measurement& m : results) list.push_back(measurementJson(m, copyGbps));
         out["measurements"] = list;
         out["validation_errors"] = ctx.validationErrors();
         writeJson(o.benchOut, out);
@@ -456,8 +419,7 @@ int runBench(const RenderOptions& options) {
         }
         if (!skipReason.empty()) std::fprintf(stderr, "warning: skipping %s: %s\n", bs.name.c_str(), skipReason.c_str());
 
-        uint64_t staticTris = 0, dynamicTris = 0;
-        if (skipReason.empty()) countTriangles(scene, staticTris, dynamicTris);
+        const SceneGeometry geometry = skipReason.empty() ? sceneGeometry(scene) : SceneGeometry{};
 
         for (uint32_t n : resolutions)
         for (const Variant& variant : variants) {
@@ -480,11 +442,11 @@ int runBench(const RenderOptions& options) {
             RenderOptions mo = o;
             mo.settings.voxels = n;
             variant.apply(mo);
-            m.staticTriangles = staticTris;
-            m.dynamicTriangles = dynamicTris;
+            m.staticTriangles = geometry.staticTriangles;
+            m.dynamicTriangles = geometry.dynamicTriangles;
             const auto start = Clock::now();
             try {
-                measure(ctx, scene, mo, warmup, frames, o.benchMaxSeconds, m, seenWarnings);
+                measure(ctx, scene, geometry, mo, warmup, frames, o.benchMaxSeconds, m, seenWarnings);
                 m.status = "ok";
                 m.detail["scene_load_ms"] = loadMs;
                 ++ok;
@@ -512,8 +474,12 @@ int runBench(const RenderOptions& options) {
     writeResults();
 
     if (!o.quiet) {
+        char copy[64] = "copy bandwidth not measured";
+        if (copyGbps > 0.0) std::snprintf(copy, sizeof copy, "copy bandwidth %.2f GB/s", copyGbps);
         printTable(results, "dvsgi bench, " + ctx.deviceName + ", " + std::to_string(o.settings.width) + "x" +
-                                std::to_string(o.settings.height) + ", " + out["date"].get<std::string>());
+                                std::to_string(o.settings.height) + ", " + out["date"].get<std::string>() + ", " +
+                                copy);
+        printEfficiencyTable(results, copyGbps);
         std::printf("\nwrote %s\n", o.benchOut.c_str());
     }
     if (ctx.validationErrors() > 0) {

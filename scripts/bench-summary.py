@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Prints the markdown tables of docs/benchmarks.md from a `dvsgi bench` JSON:
 median GPU ms per pass for the default settings (one column per scene and
-voxel resolution), then the frame time of every variant (Tables III and V).
+voxel resolution), then the frame time of every variant (Tables III and V),
+then, for files that have them, the GB/s of the bytes model per pass and
+their fraction of the copy bandwidth.
 Usage: scripts/bench-summary.py BENCH.json"""
 import json
 import sys
@@ -44,3 +46,17 @@ if variants:
                       and x.get("variant", "") == v), None)
             row.append("–" if m is None else f"{m['frame_gpu']['median_ms']:.2f}")
         print(f"| {v or 'defaults'} | " + " | ".join(row) + " |")
+copy = dev.get("copy_bandwidth_gbps")
+if copy and any("gbps" in p for m in base for p in m["passes"]):
+    print(f"\n| GB/s (% of copy, {copy:.3g} GB/s) | " + " | ".join(cols) + " |")
+    print("|---|" + "---|" * len(cols))
+    for name in order:
+        row = []
+        for m in base:
+            p = next((p for p in m["passes"] if p["name"] == name), {})
+            row.append("–" if "gbps" not in p else f"{p['gbps']:.3g} ({100 * p['bandwidth_fraction']:.3g} %)")
+        if any(r != "–" for r in row):
+            print(f"| {name} | " + " | ".join(row) + " |")
+    print("| occupied / dynamic voxels | " + " | ".join(
+        f"{m['voxel_counts']['occupied']} / {m['voxel_counts']['dynamic']}" if "voxel_counts" in m else "–"
+        for m in base) + " |")

@@ -24,6 +24,9 @@ uint64_t GBuffer::memoryBytes() const {
     return base.memorySize() + normal.memorySize() + emission.memorySize() + depth.memorySize();
 }
 
+uint32_t FrameSize::traceWidth() const { return std::max(1u, uint32_t(std::lround(internalWidth() * traceScale))); }
+uint32_t FrameSize::traceHeight() const { return std::max(1u, uint32_t(std::lround(internalHeight() * traceScale))); }
+
 FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
     const uint32_t iw = s.internalWidth(), ih = s.internalHeight();
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -42,8 +45,8 @@ FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
     t.visibility = image2D(ctx, VK_FORMAT_R16_SFLOAT, iw, ih, storage, "light visibility");
     t.diffuse = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, iw, ih, storage, "indirect diffuse");
     t.specular = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, iw, ih, storage, "specular");
-    t.traceWidth = std::max(1u, uint32_t(std::lround(iw * s.traceScale)));
-    t.traceHeight = std::max(1u, uint32_t(std::lround(ih * s.traceScale)));
+    t.traceWidth = s.traceWidth();
+    t.traceHeight = s.traceHeight();
     if (t.traceWidth != iw || t.traceHeight != ih) {
         t.traceDiffuse = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, t.traceWidth, t.traceHeight, storage,
                                  "indirect diffuse (trace size)");

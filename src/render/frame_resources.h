@@ -28,6 +28,8 @@ struct FrameSize {
     uint32_t shadowViews = 0;        // layers of the shadow-map array
     uint32_t internalWidth() const { return width * supersample; }
     uint32_t internalHeight() const { return height * supersample; }
+    uint32_t traceWidth() const;   // cone-tracing size: internal x traceScale, at least 1
+    uint32_t traceHeight() const;
 };
 
 struct FrameTargets {

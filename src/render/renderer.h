@@ -130,6 +130,7 @@ public:
     const std::vector<std::string>& warnings() const { return warnings_; }
     uint64_t triangleCount() const;
     uint32_t emitterPatchCount() const { return patchCount_; }
+    uint32_t shadowViewCount() const { return viewCount_; }  // shadow-map layers rendered per frame
 
 private:
     void updateFrameConstants();

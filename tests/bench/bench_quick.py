@@ -67,6 +67,35 @@ check("quick: every bench setting recorded by its flag name",
       all(k in s for k in ("voxels", "cone-step", "bounces", "shadow-map", "bench-quick", "validate")), str(s))
 check("quick: no validation errors", j.get("validation_errors") == 0, str(j.get("validation_errors")))
 
+# The efficiency figures: copy bandwidth, voxel counts, bytes model per pass (no timing asserted).
+copy = dev.get("copy_bandwidth", {})
+gbps = dev.get("copy_bandwidth_gbps") or 0
+check("quick: copy bandwidth measured", gbps > 0 and copy.get("gbps") == gbps, str(copy)[:300])
+check("quick: copy bandwidth size and repetitions recorded",
+      copy.get("buffer_bytes", 0) >= 16 << 20 and copy.get("bytes_per_copy") == 2 * copy.get("buffer_bytes", 0)
+      and copy.get("repetitions") == 5 and len(copy.get("samples_ms", [])) == 5, str(copy)[:300])
+check("quick: copy bandwidth in the header", "copy bandwidth:" in stderr and "copy bandwidth" in stdout, stderr[-500:])
+vc = m.get("voxel_counts", {})
+check("quick: occupied and dynamic voxels counted",
+      vc.get("occupied", 0) > 0 and 0 < vc.get("dynamic", 0) <= vc.get("occupied", 0), str(vc))
+check("quick: bytes model inputs recorded", m.get("bytes_model", {}).get("occupied_voxels") == vc.get("occupied")
+      and m.get("bytes_model", {}).get("voxels") == 32, str(m.get("bytes_model")))
+modelled = ("clear all voxels", "voxelize static", "clear dynamic voxels", "voxelize dynamic", "shadow maps",
+            "voxel direct light", "voxel bounce", "voxel filtering (bounce)", "gbuffer", "direct lighting",
+            "cone tracing", "composite")
+for name in modelled:
+    p = passes.get(name, {})
+    ok = (p.get("bytes", 0) > 0 and p["bytes"] == p.get("bytes_read", -1) + p.get("bytes_written", -1)
+          and p.get("gbps", -1) >= 0 and p.get("bandwidth_fraction") is not None
+          and abs(p["bandwidth_fraction"] - p["gbps"] / gbps) <= 1e-9 * max(p["bandwidth_fraction"], 1))
+    check("quick: '%s' bytes, GB/s and fraction" % name, ok,
+          json.dumps({k: v for k, v in p.items() if k != "samples_ms"})[:300])
+fg = m.get("frame_gpu", {})
+check("quick: frame bytes, GB/s and fraction", fg.get("bytes", 0) > 0 and fg.get("gbps", 0) > 0
+      and fg.get("bandwidth_fraction") is not None, str({k: v for k, v in fg.items() if k != "samples_ms"}))
+check("quick: efficiency table on stdout", "GB/s of the bytes model" in stdout
+      and "| occupied / dynamic voxels |" in stdout, stdout[-1500:])
+
 # 2. A shared folder without the scenes: skipped with a warning naming the file.
 out2 = os.path.join(TMP, "missing.json")
 missing = os.path.join(TMP, "no-shared-here")

@@ -1,0 +1,113 @@
+#include "bench/bytes_model.h"
+
+#include <algorithm>
+
+#include "shared/voxel_data.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::bench {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+// Formats from docs/ARCHITECTURE.md ("Volumes", "The frame").
+constexpr uint64_t kAttributeBytes = sh::VOXEL_CHANNELS * 4;  // 13 R32F channels per voxel
+constexpr uint64_t kFlagBytes = 1;                            // R8_UINT
+constexpr uint64_t kVoxelLightBytes = 8;                      // RGBA16F: direct light, radiance, directional
+constexpr uint64_t kListEntryBytes = 4;                       // occupied-voxel list: packed coordinate
+// The bounce reads the fragment count, albedo and six normal weights, not the
+// emission (the direct light already holds it).
+constexpr uint64_t kBounceAttributeBytes = 10 * 4;
+constexpr uint64_t kGBufferColorBytes = 8;  // base, normal, emission: RGBA16F each
+constexpr uint64_t kDepthBytes = 4;         // D32
+constexpr uint64_t kDirectBytes = 16;       // RGBA32F direct radiance
+constexpr uint64_t kVisibilityBytes = 2;    // R16F light visibility
+constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specular
+constexpr uint64_t kOutputBytes = 16;       // RGBA32F
+
+uint64_t cube(uint64_t s) { return s * s * s; }
+
+// Anisotropic filtering of all levels: level 0 reads the radiance volume once
+// (the six directions share the reads), level l > 0 reads level l - 1 of each
+// of the six volumes; every level of the six is written.
+PassTraffic filtering(uint32_t n, const char* name) {
+    PassTraffic p{name};
+    const uint32_t levels = vxgi::directionalMipCount(n);
+    p.readBytes = cube(n) * kVoxelLightBytes;
+    for (uint32_t l = 0; l < levels; ++l) {
+        const uint64_t target = cube(std::max(uint64_t(n / 2) >> l, uint64_t(1)));
+        p.writtenBytes += 6 * target * kVoxelLightBytes;
+        if (l + 1 < levels) p.readBytes += 6 * target * kVoxelLightBytes;
+    }
+    return p;
+}
+
+}  // namespace
+
+std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
+    std::vector<PassTraffic> out;
+    const uint64_t n3 = cube(in.voxels);
+    const uint64_t occupied = in.occupiedVoxels, dynamic = std::min(in.dynamicVoxels, occupied);
+    const uint64_t staticVoxels = occupied - dynamic;
+    const uint64_t geometry = in.staticGeometryBytes + in.dynamicGeometryBytes;
+    const uint64_t internal = uint64_t(in.internalWidth) * in.internalHeight;
+    const uint64_t trace = uint64_t(in.traceWidth) * in.traceHeight;
+    const uint64_t output = uint64_t(in.outputWidth) * in.outputHeight;
+    const uint64_t bounces = in.bounces;
+
+    if (in.voxels > 0) {
+        // The old contents are unknown: every attribute, flag, direct light and
+        // radiance texel is written (the per-voxel passes write occupied voxels only).
+        out.push_back({"clear all voxels", 0, n3 * (kAttributeBytes + kFlagBytes + 2 * kVoxelLightBytes)});
+        out.push_back({"voxelize static", in.staticGeometryBytes,
+                       staticVoxels * (kAttributeBytes + kFlagBytes + kListEntryBytes)});
+        // The voxels dynamic geometry wrote last frame (their list entries);
+        // this frame's count stands in for them (the object moves a voxel or
+        // less per frame). Attributes, direct light and radiance are zeroed.
+        out.push_back({"clear dynamic voxels", dynamic * kListEntryBytes,
+                       dynamic * (kAttributeBytes + 2 * kVoxelLightBytes)});
+        out.push_back({"voxelize dynamic", in.dynamicGeometryBytes + dynamic * kFlagBytes,
+                       dynamic * (kAttributeBytes + kListEntryBytes)});
+    }
+    // Every view rasterizes all geometry and writes its whole layer.
+    out.push_back({"shadow maps", geometry * in.shadowViews,
+                   uint64_t(in.shadowMapSize) * in.shadowMapSize * kDepthBytes * in.shadowViews});
+    if (in.voxels > 0) {
+        out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),
+                       occupied * kVoxelLightBytes});
+        out.push_back(filtering(in.voxels, "voxel filtering"));
+        // Cone samples are not counted: the bytes are those of the voxel's own
+        // attributes, direct light and result.
+        out.push_back({"voxel bounce",
+                       bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kVoxelLightBytes),
+                       bounces * occupied * kVoxelLightBytes});
+        PassTraffic again = filtering(in.voxels, "voxel filtering (bounce)");
+        again.readBytes *= bounces;
+        again.writtenBytes *= bounces;
+        out.push_back(again);
+    }
+    out.push_back({"gbuffer", geometry, internal * (3 * kGBufferColorBytes + kDepthBytes)});
+    out.push_back({"direct lighting", internal * (3 * kGBufferColorBytes + kDepthBytes),
+                   internal * (kDirectBytes + kVisibilityBytes)});
+    if (in.voxels > 0) {
+        // Base colour (roughness, metallic), normal and depth per traced pixel.
+        out.push_back({"cone tracing", trace * (2 * kGBufferColorBytes + kDepthBytes), trace * 2 * kTermBytes});
+        if (trace != internal)
+            out.push_back({"upsample", trace * 2 * kTermBytes + internal * (kGBufferColorBytes + kDepthBytes),
+                           internal * 2 * kTermBytes});
+    }
+    const uint64_t terms = in.voxels > 0 ? 2 * kTermBytes : 0;
+    out.push_back({"composite", internal * (kDirectBytes + terms), output * kOutputBytes});
+    return out;
+}
+
+const PassTraffic* findPass(const std::vector<PassTraffic>& passes, const std::string& name) {
+    for (const PassTraffic& p : passes)
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+double gigabytesPerSecond(uint64_t bytes, double ms) { return ms > 0.0 ? double(bytes) / (ms * 1e6) : 0.0; }
+
+}  // namespace dvsgi::bench

@@ -1,0 +1,107 @@
+// The bench's bytes model (src/bench/bytes_model.h) against a case computed
+// by hand, and against the volumes' own sizes.
+#include <gtest/gtest.h>
+
+#include "bench/bytes_model.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::bench {
+namespace {
+
+// 32^3, 1000 occupied voxels of which 100 dynamic, 160x90 without
+// supersampling or reduced tracing, one 512^2 shadow view, 1000 static and
+// 500 dynamic geometry bytes, one bounce.
+ModelInputs handCase() {
+    ModelInputs in;
+    in.voxels = 32;
+    in.occupiedVoxels = 1000;
+    in.dynamicVoxels = 100;
+    in.outputWidth = in.internalWidth = in.traceWidth = 160;
+    in.outputHeight = in.internalHeight = in.traceHeight = 90;
+    in.shadowMapSize = 512;
+    in.shadowViews = 1;
+    in.staticGeometryBytes = 1000;
+    in.dynamicGeometryBytes = 500;
+    in.bounces = 1;
+    return in;
+}
+
+void expectPass(const std::vector<PassTraffic>& passes, const char* name, uint64_t read, uint64_t written) {
+    const PassTraffic* p = findPass(passes, name);
+    ASSERT_NE(p, nullptr) << name;
+    EXPECT_EQ(p->readBytes, read) << name;
+    EXPECT_EQ(p->writtenBytes, written) << name;
+    EXPECT_EQ(p->bytes(), read + written) << name;
+}
+
+TEST(BytesModel, HandComputedCase) {
+    const std::vector<PassTraffic> p = passTraffic(handCase());
+    // 32^3 = 32768 voxels; 52 attribute bytes (13 x R32F) + 1 flag byte + direct
+    // light and radiance (RGBA16F) each.
+    expectPass(p, "clear all voxels", 0, 32768 * (53 + 16));
+    // 900 static voxels; 100 dynamic ones; 4-byte list entries.
+    expectPass(p, "voxelize static", 1000, 900 * (53 + 4));
+    expectPass(p, "clear dynamic voxels", 100 * 4, 100 * (52 + 16));
+    expectPass(p, "voxelize dynamic", 500 + 100, 100 * (52 + 4));
+    expectPass(p, "shadow maps", 1500, 512 * 512 * 4);
+    expectPass(p, "voxel direct light", 1000 * (4 + 52), 1000 * 8);
+    // Directional levels 16^3 .. 1^3 (5 levels), RGBA16F, 6 volumes: reads
+    // 32^3 radiance + levels 16^3..2^3, writes all five levels.
+    const uint64_t filterRead = 32768 * 8 + 6 * 8 * (4096 + 512 + 64 + 8);
+    const uint64_t filterWritten = 6 * 8 * (4096 + 512 + 64 + 8 + 1);
+    expectPass(p, "voxel filtering", filterRead, filterWritten);
+    expectPass(p, "voxel bounce", 1000 * (4 + 40 + 8), 1000 * 8);
+    expectPass(p, "voxel filtering (bounce)", filterRead, filterWritten);
+    // 14400 pixels: G-buffer 3 x RGBA16F + D32 = 28 bytes.
+    expectPass(p, "gbuffer", 1500, 14400 * 28);
+    expectPass(p, "direct lighting", 14400 * 28, 14400 * (16 + 2));
+    expectPass(p, "cone tracing", 14400 * 20, 14400 * 16);
+    expectPass(p, "composite", 14400 * 32, 14400 * 16);
+    EXPECT_EQ(findPass(p, "upsample"), nullptr) << "no upsample at full trace size";
+    EXPECT_EQ(p.size(), 13u);
+}
+
+TEST(BytesModel, BouncesScaleTheBouncePassesOnly) {
+    ModelInputs in = handCase();
+    in.bounces = 3;
+    const std::vector<PassTraffic> one = passTraffic(handCase()), three = passTraffic(in);
+    for (const char* name : {"voxel bounce", "voxel filtering (bounce)"})
+        EXPECT_EQ(findPass(three, name)->bytes(), 3 * findPass(one, name)->bytes()) << name;
+    EXPECT_EQ(findPass(three, "voxel filtering")->bytes(), findPass(one, "voxel filtering")->bytes());
+}
+
+TEST(BytesModel, ReducedTraceAddsTheUpsample) {
+    ModelInputs in = handCase();
+    in.traceWidth = 80;
+    in.traceHeight = 45;
+    const std::vector<PassTraffic> p = passTraffic(in);
+    expectPass(p, "cone tracing", 3600 * 20, 3600 * 16);
+    // Trace-size terms + full-size normal and depth in, full-size terms out.
+    expectPass(p, "upsample", 3600 * 16 + 14400 * 12, 14400 * 16);
+}
+
+TEST(BytesModel, DenseVoxelPassesMatchTheVolumeSizes) {
+    for (uint32_t n : {16u, 64u, 256u}) {
+        ModelInputs in = handCase();
+        in.voxels = n;
+        const std::vector<PassTraffic> p = passTraffic(in);
+        uint64_t cleared = 0, directional = 0;
+        for (const vxgi::VolumeMemory& v : vxgi::volumeMemory(n)) {
+            if (v.name.starts_with("voxel attributes") || v.name == "static flags" || v.name == "voxel direct light" ||
+                v.name == "radiance")
+                cleared += v.bytes;
+            if (v.name.starts_with("directional")) directional = v.bytes;
+        }
+        EXPECT_EQ(findPass(p, "clear all voxels")->writtenBytes, cleared) << n;
+        EXPECT_EQ(findPass(p, "voxel filtering")->writtenBytes, directional) << n;
+    }
+}
+
+TEST(BytesModel, GigabytesPerSecond) {
+    EXPECT_DOUBLE_EQ(gigabytesPerSecond(2'000'000'000, 1000.0), 2.0);
+    EXPECT_DOUBLE_EQ(gigabytesPerSecond(1'000'000, 0.5), 2.0);
+    EXPECT_EQ(gigabytesPerSecond(1000, 0.0), 0.0);
+}
+
+}  // namespace
+}  // namespace dvsgi::bench
