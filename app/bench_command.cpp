@@ -112,6 +112,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
              std::vector<std::string>& seenWarnings) {
     const auto setupStart = Clock::now();
     render::Renderer renderer(ctx, scene, o.settings);
+    if (std::optional<scene::CameraPath> path = cameraPathFor(o)) renderer.setCameraPath(std::move(path));
     const double setupMs = msSince(setupStart);
     for (const std::string& w : renderer.warnings())
         if (std::find(seenWarnings.begin(), seenWarnings.end(), w) == seenWarnings.end()) {
@@ -314,6 +315,7 @@ int runBench(const RenderOptions& options) {
     }
     const std::vector<uint32_t>& resolutions = o.benchVoxels;
     const uint32_t frames = o.benchFrames, warmup = o.benchWarmup;
+    cameraPathFor(o);  // a bad --camera-path fails now, not in every measurement
 
     const fs::path shared(o.sharedDir);
     const fs::path scenes = shared / "scenes";

@@ -37,6 +37,7 @@ struct RenderOptions {
     uint32_t frames = 1;          // render frames 0..K-1, write the last (or each: '#' in --out)
     float timeStep = 1.0f / 30.0f;  // seconds between frames
     std::vector<std::string> dynamicNodes;  // node names marked dynamic
+    std::string cameraPath;       // keyframes that drive the camera (scene/camera_path.h)
     std::string addModel;         // a model that moves on a circle through the scene (dynamic)
     float addModelSize = 0.0f;    // its largest extent in metres; 0 = 1/5 of the scene
 

@@ -177,6 +177,11 @@ scene::Scene loadForOptions(const RenderOptions& o) {
     return scene;
 }
 
+std::optional<scene::CameraPath> cameraPathFor(const RenderOptions& o) {
+    if (o.cameraPath.empty()) return std::nullopt;
+    return scene::loadCameraPath(o.cameraPath);
+}
+
 // A --metrics path whose folder cannot be made fails before anything is
 // rendered or written, naming the option and the path.
 void checkMetricsPath(const std::string& path) {
@@ -195,6 +200,7 @@ int runRender(const RenderOptions& o) {
         throw std::runtime_error("--aov: the terms exist only for the final image, not for --view voxels:...");
     const scene::Scene scene = loadForOptions(o);
     for (const std::string& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    std::optional<scene::CameraPath> path = cameraPathFor(o);
 
     gpu::ContextOptions co;
     co.validation = o.validate;
@@ -204,6 +210,8 @@ int runRender(const RenderOptions& o) {
 
     render::Renderer renderer(ctx, scene, o.settings);
     for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    const bool moving = o.frames > 1 || !scene.animations.empty() || path;
+    if (path) renderer.setCameraPath(std::move(path));
     if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), renderer.voxelizer()->hardwareConservative());
 
     const bool eachFrame = o.outExr.find('#') != std::string::npos;
@@ -212,7 +220,7 @@ int runRender(const RenderOptions& o) {
     std::string lastExr, lastPng;
     FrameProgress progress("", o.frames, !o.quiet);
     for (uint32_t frame = 0; frame < o.frames; ++frame) {
-        if (o.frames > 1 || !scene.animations.empty()) renderer.setTime(float(frame) * o.timeStep);
+        if (moving) renderer.setTime(float(frame) * o.timeStep);
         stats = renderer.renderFrame();
         progress.done(frame + 1);
         if (frame == 0) {

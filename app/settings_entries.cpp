@@ -461,6 +461,14 @@ std::vector<Setting> conesAndCommands() {
                    "turn per 120 frames"},
                   FIELD(addModel)),
              "bunny.ply"), "none"),
+        unset(with(text({"camera-path", kAnimation, "FILE.json", "",
+                         "drive the camera (--camera) along keyframes of time, position, target or orientation and "
+                         "field of view (format: docs/camera-paths.md); render and bench sample it at frame * "
+                         "--time-step, the viewer plays it",
+                         kRender | kView | kBench},
+                        FIELD(cameraPath)),
+                   "walk.json"),
+              "the scene's camera"),
         unset(with(number({"add-model-size", kAnimation, "M", "m", "the added model's largest extent"}, 1e-4, 1e4,
                           FIELD(addModelSize)),
                    "0.5", "a size in metres in 0.0001..10000"),

@@ -17,7 +17,6 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 #include <glm/gtc/matrix_transform.hpp>
-#include <glm/gtx/matrix_decompose.hpp>
 
 #include "gpu/check.h"
 #include "gpu/context.h"
@@ -140,33 +139,6 @@ struct FlyCamera {
     }
 };
 
-// Sets node `i`'s local TRS so that its world matrix becomes `world`.
-void setNodeWorld(scene::Scene& s, int i, const glm::mat4& world) {
-    const std::vector<glm::mat4> all = scene::worldMatrices(s);
-    scene::Node& n = s.nodes[size_t(i)];
-    const glm::mat4 parent = n.parent >= 0 ? all[size_t(n.parent)] : glm::mat4(1.0f);
-    glm::vec3 scale, translation, skew;
-    glm::vec4 perspective;
-    glm::quat rotation;
-    if (!glm::decompose(glm::inverse(parent) * world, scale, rotation, translation, skew, perspective)) return;
-    n.translation = translation;
-    n.rotation = rotation;
-}
-
-// The node of the index-th placed camera (node order, reachable nodes only).
-int cameraNode(const scene::Scene& s, int index) {
-    const std::vector<glm::mat4> world = scene::worldMatrices(s);
-    const std::vector<scene::PlacedCamera> placed = scene::placedCameras(s, world);
-    if (index < 0 || size_t(index) >= placed.size()) return -1;
-    for (size_t i = 0; i < s.nodes.size(); ++i) {
-        const scene::Node& n = s.nodes[i];
-        if (n.camera >= 0 && size_t(n.camera) < s.cameras.size() && world[i] == placed[size_t(index)].world &&
-            s.cameras[size_t(n.camera)].name == placed[size_t(index)].camera.name)
-            return int(i);
-    }
-    return -1;
-}
-
 // Objects the keys can move: lights, then dynamic nodes.
 std::vector<int> movableNodes(const scene::Scene& s) {
     std::vector<int> out;
@@ -256,9 +228,11 @@ int runView(const RenderOptions& options) {
     o.settings.height = uint32_t(std::max(fbh, 1));
     swapchain.create(o.settings.width, o.settings.height, o.vsync);
 
+    const std::optional<scene::CameraPath> cameraPath = cameraPathFor(o);
     auto makeRenderer = [&](const scene::Scene& s) {
         auto r = std::make_unique<render::Renderer>(ctx, s, viewSettings(o));
         for (const std::string& w : r->warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+        if (cameraPath) r->setCameraPath(cameraPath);
         return r;
     };
     std::unique_ptr<render::Renderer> renderer = makeRenderer(loaded);
@@ -427,8 +401,8 @@ int runView(const RenderOptions& options) {
             }
         }
         if (cameraMoved) {
-            const int node = cameraNode(sc, o.settings.camera);
-            if (node >= 0) setNodeWorld(sc, node, fly.world());
+            const int node = scene::placedCameraNode(sc, o.settings.camera);
+            if (node >= 0) scene::setNodeWorld(sc, node, fly.world());
         }
         // Same frame sequence as `dvsgi render --frames K`: fixed time steps.
         if (animated)

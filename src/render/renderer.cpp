@@ -165,7 +165,13 @@ void Renderer::sceneChanged() {
 
 void Renderer::setTime(float seconds) {
     scene::applyAnimations(scene_, seconds);
+    if (cameraPath_) scene::applyCameraPath(scene_, settings_.camera, *cameraPath_, seconds);
     sceneChanged();
+}
+
+void Renderer::setCameraPath(std::optional<scene::CameraPath> path) {
+    cameraPath_ = std::move(path);
+    setTime(0.0f);
 }
 
 Renderer::~Renderer() = default;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "render/gather.h"
 #include "render/lighting.h"
 #include "render/voxel_view.h"
+#include "scene/camera_path.h"
 #include "scene/scene.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_light_settings.h"
@@ -109,6 +111,10 @@ public:
     scene::Scene& scene() { return scene_; }
     void sceneChanged();
     void setTime(float seconds);
+    // A camera path (scene/camera_path.h) that setTime() applies after the
+    // animations, to the settings' camera; it takes effect at once (time 0).
+    // std::nullopt: the scene's own camera (and its animation) again.
+    void setCameraPath(std::optional<scene::CameraPath> path);
     void markStaticDirty() { staticDirty_ = true; }
     // Re-runs static voxelization now, in its own submission (what the next
     // frame does after markStaticDirty), and returns its passes' GPU times:
@@ -170,6 +176,7 @@ private:
     std::unique_ptr<GatherPass> gather_;
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
+    std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
     std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(N) floats
     std::unique_ptr<gpu::GpuTimers> timers_;

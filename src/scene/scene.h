@@ -161,6 +161,11 @@ struct PlacedCamera {
 };
 // Cameras in node order (lowest node index first, as CONVENTIONS.md requires).
 std::vector<PlacedCamera> placedCameras(const Scene& scene, const std::vector<glm::mat4>& world);
+// The node of the index-th placed camera; -1 when there is none.
+int placedCameraNode(const Scene& scene, int index);
+// Sets node i's local rotation and translation so that its world matrix
+// becomes `world` (a rigid transform), whatever its parents hold.
+void setNodeWorld(Scene& scene, int i, const glm::mat4& world);
 
 Bounds worldBounds(const Scene& scene, const std::vector<DrawItem>& items);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/matrix_decompose.hpp>
 #include <glm/gtx/quaternion.hpp>
 
 #include "scene/scene.h"
@@ -105,6 +106,29 @@ std::vector<PlacedCamera> placedCameras(const Scene& scene, const std::vector<gl
         out.push_back(PlacedCamera{scene.cameras[n.camera], i < world.size() ? world[i] : glm::mat4(1.0f)});
     }
     return out;
+}
+
+int placedCameraNode(const Scene& scene, int index) {
+    const std::vector<bool> seen = reachable(scene);
+    int placed = 0;
+    for (size_t i = 0; i < scene.nodes.size(); ++i) {
+        const Node& n = scene.nodes[i];
+        if (!seen[i] || n.camera < 0 || n.camera >= static_cast<int>(scene.cameras.size())) continue;
+        if (placed++ == index) return int(i);
+    }
+    return -1;
+}
+
+void setNodeWorld(Scene& scene, int i, const glm::mat4& world) {
+    const std::vector<glm::mat4> all = worldMatrices(scene);
+    Node& n = scene.nodes[size_t(i)];
+    const glm::mat4 parent = n.parent >= 0 ? all[size_t(n.parent)] : glm::mat4(1.0f);
+    glm::vec3 scale, translation, skew;
+    glm::vec4 perspective;
+    glm::quat rotation;
+    if (!glm::decompose(glm::inverse(parent) * world, scale, rotation, translation, skew, perspective)) return;
+    n.translation = translation;
+    n.rotation = rotation;
 }
 
 Bounds worldBounds(const Scene& scene, const std::vector<DrawItem>& items) {

@@ -107,6 +107,24 @@ expect_error("bad --output", ["render", "--output", "everything"], "--output")
 expect_error("unknown --dynamic node", ["render", "--dynamic", "no_such_node", "--out", out], "--dynamic")
 expect_error("missing --add-model", ["render", "--add-model", os.path.join(TMP, "nope.ply"), "--out", out], "nope.ply")
 
+# Camera paths: a missing or malformed file is named; a walk moves the camera between frames.
+expect_error("missing --camera-path", ["render", "--camera-path", os.path.join(TMP, "nope.json"), "--out", out],
+             "nope.json")
+bad_path = tmpfile("bad_path.json", '{"keyframes": [{"time": 0, "position": [0, 1, 3]}]}')
+expect_error("malformed --camera-path", ["render", "--camera-path", bad_path, "--out", out], "bad_path.json")
+checks += 1
+walk = tmpfile("walk.json", json.dumps({"keyframes": [
+    {"time": 0.0, "position": [0.0, 1.0, 3.4], "target": [0.0, 1.0, 0.0]},
+    {"time": 0.1, "position": [0.6, 1.2, 3.0], "target": [0.0, 0.8, 0.0], "yfov_degrees": 50}]}))
+walk_frames = os.path.join(TMP, "walk_#.exr")
+rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--frames", "2", "--time-step", "0.1",
+                 "--camera-path", walk, "--out", walk_frames, "--png", "none", "--validate", "--quiet")
+paths = [os.path.join(TMP, "walk_%d.exr" % i) for i in range(2)]
+moved = all(os.path.exists(f) for f in paths) and open(paths[0], "rb").read() != open(paths[1], "rb").read()
+print("%-34s rc=%d moved %s" % ("--camera-path walk", rc, moved))
+if rc != 0 or not moved:
+    failures.append("--camera-path walk: rc=%d, frames differ: %s %s" % (rc, moved, se))
+
 # Several frames with an added moving model, every frame written; a voxel view; single terms.
 checks += 3
 bunny = os.path.join(os.path.dirname(__file__), "../../../shared/scenes/stanford-bunny/bun_zipper_res2.ply")
