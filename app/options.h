@@ -38,6 +38,7 @@ struct RenderOptions {
     float timeStep = 1.0f / 30.0f;  // seconds between frames
     std::vector<std::string> dynamicNodes;  // node names marked dynamic
     std::string cameraPath;       // keyframes that drive the camera (scene/camera_path.h)
+    std::string recordPath = "out/camera_path.json";  // dvsgi view: where K writes the recorded path
     std::string addModel;         // a model that moves on a circle through the scene (dynamic)
     float addModelSize = 0.0f;    // its largest extent in metres; 0 = 1/5 of the scene
 

@@ -487,6 +487,13 @@ std::vector<Setting> conesAndCommands() {
                   FIELD(screenshot), ".exr"),
              "shot.exr"), "none"),
 
+        with(text({"record-path", kViewerGroup, "FILE.json", "",
+                   "where the K key writes the camera path it records (a key per press: the camera's pose, field of "
+                   "view and time; docs/camera-paths.md)",
+                   kView},
+                  FIELD(recordPath), ".json"),
+             "walk.json"),
+
         // dvsgi bench.
         with(text({"bench-out", kBenchGroup, "FILE.json", "", "results; a markdown table goes to stdout", kBench},
                   FIELD(benchOut), ".json"),
@@ -559,7 +566,7 @@ const std::vector<SettingGroup>& settingGroups() {
         {kAnimation, ""},
         {kViewerGroup,
          "Keys: WASD move, Q/E down/up, right mouse drag looks, scroll changes the speed, 1-9 pick a scene camera, "
-         "V toggles vsync, P takes a screenshot, Esc closes; arrows and PageUp/PageDown move a light or dynamic "
+         "V toggles vsync, P takes a screenshot, K records a camera-path key, Esc closes; arrows and PageUp/PageDown move a light or dynamic "
          "object (Tab picks which). The window shows the frame as the PNG preview encodes it (--exposure "
          "applies); the panel changes every setting marked 'next frame' without rebuilding the renderer."},
         {kBenchGroup,

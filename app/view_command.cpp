@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <vector>
 
@@ -138,6 +139,29 @@ struct FlyCamera {
         return glm::rotate(m, pitch, glm::vec3(1, 0, 0));
     }
 };
+
+// Appends the camera's pose to `path` and rewrites `file` (a failure is
+// reported; the window stays open). Keys need increasing times: a second key
+// in the same frame is dropped.
+void recordKey(scene::CameraPath& path, const render::Renderer& renderer, float time, const std::string& file) {
+    if (!path.keys.empty() && !(time > path.keys.back().time)) return;
+    scene::CameraKey key;
+    key.time = time;
+    key.position = glm::vec3(renderer.camera().world[3]);
+    key.orientation = glm::normalize(glm::quat_cast(glm::mat3(renderer.camera().world)));
+    key.yfov = renderer.camera().camera.yfov;
+    path.keys.push_back(key);
+    try {
+        std::filesystem::path parent = std::filesystem::path(file).parent_path();
+        if (!parent.empty()) std::filesystem::create_directories(parent);
+        std::ofstream out(file, std::ios::binary | std::ios::trunc);
+        out << scene::cameraPathJson(path);
+        if (!out) throw std::runtime_error("cannot write the file");
+        std::printf("camera key %zu at %.2f s -> %s\n", path.keys.size(), time, file.c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "dvsgi: --record-path %s: %s\n", file.c_str(), e.what());
+    }
+}
 
 // Objects the keys can move: lights, then dynamic nodes.
 std::vector<int> movableNodes(const scene::Scene& s) {
@@ -289,7 +313,10 @@ int runView(const RenderOptions& options) {
     auto titleTime = last;
     double frameMsAvg = 0.0;
     render::FrameStats stats;
-    const bool animated = !renderer->scene().animations.empty();
+    const bool animated = !renderer->scene().animations.empty() || cameraPath;
+    // K appends the camera's pose at the current time to a path written to --record-path.
+    scene::CameraPath recorded;
+    recorded.catmullRom = true;
 
     while (!glfwWindowShouldClose(window.handle)) {
         glfwPollEvents();
@@ -334,6 +361,7 @@ int runView(const RenderOptions& options) {
                 std::printf("present mode: %s\n", swapchain.presentModeName());
             }
             if (key == GLFW_KEY_P) screenshotWanted = true;
+            if (key == GLFW_KEY_K) recordKey(recorded, *renderer, float(frame) * o.timeStep, o.recordPath);
             if (key == GLFW_KEY_TAB) ++selected;
         }
         input.pressed.clear();

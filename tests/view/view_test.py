@@ -7,7 +7,7 @@ Without Xvfb, a GLFW build or an X display Python can open, the window checks
 cannot run: the script then exits 77, which ctest reports as a skip (and
 scripts/test.sh counts as a failure), never 0.
 Usage: view_test.py path/to/dvsgi"""
-import ctypes, ctypes.util, os, shutil, struct, subprocess, sys, tempfile, time, zlib
+import ctypes, ctypes.util, json, os, shutil, struct, subprocess, sys, tempfile, time, zlib
 
 DVSGI = sys.argv[1]
 TMP = tempfile.mkdtemp(prefix="dvsgi-view-")
@@ -354,6 +354,40 @@ def key_screenshot_check(display, env, common):
         check("P key screenshot matches headless", d < SAME_RENDER, "mean relative difference %.6f" % d)
 
 
+def record_path_check(display, env, common):
+    """Press K twice in a running window: the application writes the camera
+    path it records (two keys, the scene camera's pose); rendering headless
+    along that path gives the headless render of the same view."""
+    cwd = os.path.join(TMP, "record")
+    os.makedirs(cwd, exist_ok=True)
+
+    def press_k(x, win, proc):
+        for _ in range(2):
+            time.sleep(1.5)
+            x.key(win, b"k", True)
+            x.key(win, b"k", False)
+        time.sleep(1.5)
+
+    result = drive_window(display, env, [*common, "--quiet"], press_k, cwd=cwd)
+    if result is None:
+        return
+    rc, out, err, _ = result
+    path = os.path.join(cwd, "out", "camera_path.json")
+    keys = []
+    if os.path.exists(path):
+        with open(path) as f:
+            keys = json.load(f).get("keyframes", [])
+    check("K key: out/camera_path.json written with 2 keys, clean exit",
+          len(keys) == 2 and rc == 0 and validation_clean(rc, err), "rc=%s keys=%d %s" % (rc, len(keys), err[-500:]))
+    if len(keys) == 2:
+        again = os.path.join(TMP, "recorded.exr")
+        rc, _, err = run(["render", *common, "--camera-path", path, "--out", again, "--png", "none", "--quiet"], env)
+        d = mean_relative_difference(read_exr(again), read_exr(os.path.join(TMP, "ref.exr"))) if rc == 0 else 1.0
+        print("render along the recorded path vs headless: mean relative difference %.6f" % d)
+        check("render along the recorded path matches the headless view", rc == 0 and d < SAME_RENDER,
+              "rc=%d d=%.6f %s" % (rc, d, err[-300:]))
+
+
 def mean_relative_difference(a, b):
     (wa, ha, ca), (wb, hb, cb) = a, b
     if (wa, ha) != (wb, hb):
@@ -434,6 +468,7 @@ else:
                       "rc=%d %s" % (rc, err[-1000:]))
                 window_checks(":%d" % display, venv, common)
                 key_screenshot_check(":%d" % display, venv, common)
+                record_path_check(":%d" % display, venv, common)
                 interaction_check(":%d" % display, venv, common, "fly camera: W moves the view", b"w",
                                   "the camera should move forward")
                 interaction_check(":%d" % display, venv, common, "moving a light (arrow key) changes the frame",
