@@ -20,6 +20,7 @@
 #include "image/image_io.h"
 #include "progress.h"
 #include "render/renderer.h"
+#include "bench_flicker.h"
 #include "render_command.h"
 #include "scene/load.h"
 #include "settings_table.h"
@@ -139,6 +140,11 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
     }
     const double warmupMs = msSince(warmStart);
 
+    // With a camera path every measured frame is reported, with its flicker
+    // figure against the frame before (the last warm-up frame for the first).
+    const bool perFrame = !o.cameraPath.empty();
+    std::optional<render::TemporalFrame> previous;
+    if (perFrame && warmup > 0) previous = render::captureIndirect(renderer);
     const auto measureStart = Clock::now();
     uint32_t bounces = 0;
     for (uint32_t i = 0; i < frames; ++i, ++frame) {
@@ -155,6 +161,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
         m.frameMs.push_back(stats.gpuMs);
         for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);
         bounces = stats.bounces;
+        if (perFrame) recordFrameFlicker(renderer, frame, float(frame) * o.timeStep, stats, previous, m);
     }
     m.frames = uint32_t(m.frameMs.size());
     modelTraffic(ctx, renderer, geometry, bounces, m);
@@ -205,6 +212,9 @@ nlohmann::json measurementJson(const Measurement& m, double copyGbps) {
     j["frame_gpu"] = summaryJson(summarize(m.frameMs), m.frameMs);
     j["frame_wall"] = summaryJson(summarize(m.wallMs), m.wallMs);
     addTrafficJson(m, copyGbps, j);
+    if (!m.flickerMean.empty())
+        j["flicker"] = {{"mean_relative_change", summaryJson(summarize(m.flickerMean), m.flickerMean)},
+                        {"p99_relative_change", summaryJson(summarize(m.flickerP99), m.flickerP99)}};
     return j;
 }
 
@@ -215,6 +225,14 @@ std::string cell(const std::vector<double>& samples) {
         std::snprintf(buf, sizeof buf, "%.2f", s.median);
     else
         std::snprintf(buf, sizeof buf, "%.2f (%.2f-%.2f)", s.median, s.min, s.max);
+    return buf;
+}
+
+// Fractions as percentages: median (min-max) over the frames.
+std::string percentCell(const std::vector<double>& samples) {
+    const Summary s = summarize(samples);
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.2f %% (%.2f-%.2f)", 100.0 * s.median, 100.0 * s.min, 100.0 * s.max);
     return buf;
 }
 
@@ -279,6 +297,14 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
     row("**frame (GPU)**", [](const Measurement& m) { return cell(m.frameMs); });
     row("frame (wall)", [](const Measurement& m) { return cell(m.wallMs); });
     row("frames measured", [](const Measurement& m) { return std::to_string(m.frames); });
+    if (std::any_of(cols.begin(), cols.end(), [](const Measurement* m) { return !m->flickerMean.empty(); })) {
+        row("flicker: mean relative change of the indirect term, frame to frame", [](const Measurement& m) {
+            return m.flickerMean.empty() ? std::string("-") : percentCell(m.flickerMean);
+        });
+        row("flicker: 99th percentile of the relative change", [](const Measurement& m) {
+            return m.flickerP99.empty() ? std::string("-") : percentCell(m.flickerP99);
+        });
+    }
     row("triangles static / dynamic", [](const Measurement& m) {
         return std::to_string(m.staticTriangles) + " / " + std::to_string(m.dynamicTriangles);
     });

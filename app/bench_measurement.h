@@ -64,6 +64,9 @@ struct Measurement {
     uint64_t occupiedVoxels = 0, dynamicVoxels = 0;
     bench::ModelInputs modelInputs;
     std::vector<bench::PassTraffic> traffic;
+    // --camera-path: the indirect term's change from each measured frame to
+    // the next (mean and 99th percentile of the relative change, per frame).
+    std::vector<double> flickerMean, flickerP99;
 };
 
 }  // namespace dvsgi::app

@@ -107,5 +107,23 @@ ms2 = j2.get("measurements", [])
 check("missing scene: recorded as skipped", len(ms2) == 1 and ms2[0].get("status") == "skipped"
       and "cornell-lights.gltf" in ms2[0].get("error", ""), json.dumps(ms2)[:300])
 
+# 3. A camera path: every measured frame reported, with the flicker figure.
+walk = os.path.join(TMP, "walk.json")
+with open(walk, "w") as f:
+    json.dump({"keyframes": [
+        {"time": 0.0, "position": [0.0016, 0.2744, -0.763], "target": [0.0, 0.2744, 0.0]},
+        {"time": 0.5, "position": [0.05, 0.30, -0.70], "target": [0.02, 0.25, 0.0]}]}, f)
+out3 = os.path.join(TMP, "walk-bench.json")
+rc, stdout, stderr = run(["--bench-quick", "--bench-out", out3, "--shared", SHARED, "--camera-path", walk])
+m3 = (load(out3).get("measurements") or [{}])[0]
+frames = m3.get("per_frame", [])
+flick = [f.get("flicker", {}) for f in frames]
+check("camera path: exit 0, every measured frame reported", rc == 0 and len(frames) == 2
+      and all("passes" in f and f.get("gpu_ms", 0) > 0 for f in frames), "rc=%d %s" % (rc, stderr[-500:]))
+check("camera path: flicker per frame, pixels compared", all(
+      f.get("compared_pixels", 0) > 1000 and 0.0 <= f.get("mean_relative_change", -1) <= f.get("p99_relative_change", -1)
+      and f.get("mean_indirect_luminance_before", 0) > 0 for f in flick), json.dumps(flick)[:500])
+check("camera path: flicker rows in the table", "flicker: mean relative change" in stdout, stdout[-800:])
+
 print("%d passed, %d failed" % (passed, len(failed)))
 sys.exit(1 if failed else 0)

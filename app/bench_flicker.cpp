@@ -1,0 +1,29 @@
+#include "bench_flicker.h"
+
+namespace dvsgi::app {
+
+void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float time, const render::FrameStats& stats,
+                        std::optional<render::TemporalFrame>& previous, Measurement& m) {
+    render::TemporalFrame current = render::captureIndirect(renderer);
+    nlohmann::json f = {{"frame", frame}, {"time", time}, {"gpu_ms", stats.gpuMs}};
+    nlohmann::json passes = nlohmann::json::object();
+    for (const gpu::TimerResult& r : stats.passes) passes[r.name] = r.ms;
+    f["passes"] = passes;
+    if (previous) {
+        const render::TemporalChange c = render::temporalChange(*previous, current);
+        f["flicker"] = {{"mean_relative_change", c.meanRelative},
+                        {"p99_relative_change", c.p99Relative},
+                        {"compared_pixels", c.compared},
+                        {"disoccluded_pixels", c.rejected},
+                        {"mean_indirect_luminance_before", c.meanLuminanceBefore},
+                        {"mean_indirect_luminance_after", c.meanLuminanceAfter}};
+        if (c.compared > 0) {
+            m.flickerMean.push_back(c.meanRelative);
+            m.flickerP99.push_back(c.p99Relative);
+        }
+    }
+    m.detail["per_frame"].push_back(f);
+    previous = std::move(current);
+}
+
+}  // namespace dvsgi::app

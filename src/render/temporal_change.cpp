@@ -1,0 +1,109 @@
+#include "render/temporal_change.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "render/renderer.h"
+#include "shared/composite_pass.h"
+
+namespace dvsgi::render {
+
+namespace {
+
+float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
+
+// Luminance of `img` at continuous pixel coordinates (pixel centres at +0.5), bilinear.
+float sampleLuminance(const image::ImageRGBA32F& img, glm::vec2 p) {
+    const glm::vec2 q = p - 0.5f;
+    const int x0 = int(std::floor(q.x)), y0 = int(std::floor(q.y));
+    const float fx = q.x - float(x0), fy = q.y - float(y0);
+    auto at = [&](int x, int y) {
+        x = std::clamp(x, 0, int(img.width) - 1);
+        y = std::clamp(y, 0, int(img.height) - 1);
+        return luminance(img.at(uint32_t(x), uint32_t(y)));
+    };
+    return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) + (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
+}
+
+}  // namespace
+
+TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& after, float depthTolerance) {
+    const uint32_t w = after.term.width, h = after.term.height;
+    if (before.term.width != w || before.term.height != h || after.depth.width != w || after.depth.height != h ||
+        before.depth.width != w || before.depth.height != h)
+        throw std::invalid_argument("temporalChange: the frames' images differ in size");
+    const glm::mat4 projA = projectionMatrix(after.camera, w, h), projB = projectionMatrix(before.camera, w, h);
+    const glm::mat4 invProjA = glm::inverse(projA);
+    const glm::mat4 viewB = viewMatrix(before.camera);
+
+    struct Pair {
+        float before, after;
+    };
+    std::vector<Pair> pairs;
+    pairs.reserve(size_t(w) * h);
+    TemporalChange out;
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const float d = after.depth.at(x, y)[0];
+            if (!std::isfinite(d) || d <= 0.0f) continue;
+            // The camera-space ray through the pixel centre, scaled to the depth.
+            const glm::vec2 ndc((float(x) + 0.5f) / float(w) * 2.0f - 1.0f, (float(y) + 0.5f) / float(h) * 2.0f - 1.0f);
+            glm::vec4 ray = invProjA * glm::vec4(ndc, 1.0f, 1.0f);
+            glm::vec3 pc = glm::vec3(ray) / ray.w;
+            pc *= d / -pc.z;
+            const glm::vec3 world = glm::vec3(after.camera.world * glm::vec4(pc, 1.0f));
+            // Where frame t saw that point, and how far its surface was there.
+            const glm::vec3 inB = glm::vec3(viewB * glm::vec4(world, 1.0f));
+            const glm::vec4 clip = projB * glm::vec4(inB, 1.0f);
+            if (clip.w <= 0.0f) {
+                ++out.rejected;
+                continue;
+            }
+            const glm::vec2 nb = glm::vec2(clip) / clip.w;
+            const glm::vec2 pb((nb.x + 1.0f) * 0.5f * float(w), (nb.y + 1.0f) * 0.5f * float(h));
+            if (pb.x < 0.0f || pb.y < 0.0f || pb.x >= float(w) || pb.y >= float(h)) {
+                ++out.rejected;
+                continue;
+            }
+            const float seen = before.depth.at(uint32_t(pb.x), uint32_t(pb.y))[0];
+            if (!std::isfinite(seen) || std::abs(seen - (-inB.z)) > depthTolerance * (-inB.z)) {
+                ++out.rejected;
+                continue;
+            }
+            pairs.push_back({sampleLuminance(before.term, pb), luminance(after.term.at(x, y))});
+        }
+    out.compared = pairs.size();
+    if (pairs.empty()) return out;
+    double sumB = 0.0, sumA = 0.0;
+    for (const Pair& p : pairs) {
+        sumB += p.before;
+        sumA += p.after;
+    }
+    out.meanLuminanceBefore = sumB / double(pairs.size());
+    out.meanLuminanceAfter = sumA / double(pairs.size());
+    const double floor = std::max(0.01 * out.meanLuminanceBefore, 1e-12);
+    std::vector<double> rel;
+    rel.reserve(pairs.size());
+    double sum = 0.0;
+    for (const Pair& p : pairs) {
+        rel.push_back(std::abs(double(p.after) - double(p.before)) / std::max(double(p.before), floor));
+        sum += rel.back();
+    }
+    out.meanRelative = sum / double(rel.size());
+    const size_t k = std::min(rel.size() - 1, size_t(std::ceil(0.99 * double(rel.size()))) - 1);
+    std::nth_element(rel.begin(), rel.begin() + std::ptrdiff_t(k), rel.end());
+    out.p99Relative = rel[k];
+    return out;
+}
+
+TemporalFrame captureIndirect(const Renderer& renderer) {
+    TemporalFrame f;
+    f.term = renderer.readTerm(shader::TERM_INDIRECT);
+    f.depth = renderer.readSurface().depth;
+    f.camera = renderer.camera();
+    return f;
+}
+
+}  // namespace dvsgi::render
