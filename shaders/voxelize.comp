@@ -143,10 +143,16 @@ void addSample(Triangle t, ivec3 voxel, ivec3 q) {
     vec3 bary = nearestBarycentric(vec3(voxel) + 0.5, t.p[0], t.p[1], t.p[2]);
     vec2 uv = bary.x * t.uv[0] + bary.y * t.uv[1] + bary.z * t.uv[2];
     GpuMaterial m = materials[t.material];
-    vec4 base = materialBaseColor(m, uv);
+    // Base colour and emissive texture through one sampleTexture call (see
+    // material.glsl: each call site costs lavapipe a 96-way switch).
+    vec4 texel[2] = vec4[2](vec4(1.0), vec4(1.0));
+    for (uint i = 0u; i < pc.dispatch.z; ++i) {
+        int index = i == 0u ? m.textures.x : m.textures.y;
+        if (index != NO_TEXTURE) texel[i] = sampleTexture(index, uv);
+    }
+    vec4 base = m.baseColor * texel[0];  // sRGB views decode
     if (!materialCovers(m, base.a, vec2(q.xy) + 0.5)) return;
-    vec3 emission = m.emission.rgb;
-    if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, uv).rgb;
+    vec3 emission = m.emission.rgb * texel[1].rgb;
     vec3 n = normalize(bary.x * t.normal[0] + bary.y * t.normal[1] + bary.z * t.normal[2]);
     accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
 }
@@ -221,6 +227,7 @@ void tilePhase() {
 }
 
 void main() {
+    materialTaps = pc.dispatch.y;
     if (pc.ids.w == VOXC_PHASE_TRIANGLES) trianglePhase();
     else tilePhase();
 }

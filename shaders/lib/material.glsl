@@ -9,7 +9,12 @@
 // Filtered by hand with texelFetch (bilinear, nearest level, repeat as the
 // scene's sampler): lavapipe (Mesa 22.3) crashes compiling textureLod or
 // textureGrad on a dynamically indexed texture array in a compute shader.
+// It also compiles every fetch site of such an array as a switch over all
+// MAX_TEXTURES slots (8 sites took 44 s to compile), so the four taps share
+// one site in a loop of `materialTaps` (4, from a push constant the compiler
+// cannot see, so it does not unroll them), and callers call this once.
 float materialUvDensity = 0.0;
+uint materialTaps = 4u;
 
 vec4 sampleTexture(int index, vec2 uv) {
     ivec2 size0 = textureSize(sampler2D(textures[index], textureSampler), 0);
@@ -22,11 +27,13 @@ vec4 sampleTexture(int index, vec2 uv) {
     ivec2 i0 = ivec2(base) % size, i1 = (ivec2(base) + 1) % size;
     i0 += ivec2(lessThan(i0, ivec2(0))) * size;
     i1 += ivec2(lessThan(i1, ivec2(0))) * size;
-    vec4 c00 = texelFetch(sampler2D(textures[index], textureSampler), ivec2(i0.x, i0.y), level);
-    vec4 c10 = texelFetch(sampler2D(textures[index], textureSampler), ivec2(i1.x, i0.y), level);
-    vec4 c01 = texelFetch(sampler2D(textures[index], textureSampler), ivec2(i0.x, i1.y), level);
-    vec4 c11 = texelFetch(sampler2D(textures[index], textureSampler), ivec2(i1.x, i1.y), level);
-    return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+    vec4 sum = vec4(0.0);
+    for (uint k = 0u; k < materialTaps; ++k) {
+        bvec2 far = bvec2((k & 1u) != 0u, (k & 2u) != 0u);
+        vec2 w = mix(1.0 - f, f, vec2(far));
+        sum += (w.x * w.y) * texelFetch(sampler2D(textures[index], textureSampler), mix(i0, i1, far), level);
+    }
+    return sum;
 }
 #else
 vec4 sampleTexture(int index, vec2 uv) {

@@ -121,7 +121,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
-                                               glm::uvec4(row, 0, 0, 0)});
+                                               glm::uvec4(row, 4, 2, 0)});
     vkCmdDispatch(cmd, row, gpu::groupCount(count, row), 1);
 
     // The tiles the triangle phase queued; its atomics and the tile phase's
@@ -133,7 +133,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .flush(cmd);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TILES),
-                                               glm::uvec4(row, 0, 0, 0)});
+                                               glm::uvec4(row, 4, 2, 0)});
     vkCmdDispatchIndirect(cmd, indirect_.handle(), 0);
 }
 
