@@ -50,7 +50,9 @@ std::string describe(const Triangle& t) {
 void expectCoverage(const CoverageReport& r, vxgi::VoxelizerKind kind) {
     EXPECT_EQ(r.misses, 0u);
     EXPECT_EQ(r.farExtras, 0u);
-    if (kind == vxgi::VoxelizerKind::Compute) EXPECT_EQ(r.extras, 0u);
+    if (kind == vxgi::VoxelizerKind::Compute) {
+        EXPECT_EQ(r.extras, 0u);
+    }
     EXPECT_GT(r.reference, 0u);
 }
 

@@ -1,7 +1,8 @@
-// Conservative coverage of single triangles: every voxel whose closed box the
-// triangle touches must be marked (zero misses), and the GPU may over-mark
-// only next to such voxels (the pixel-column depth span and the dilation
-// reach at most one voxel further).
+// Conservative coverage of single triangles, for both voxelizers: every voxel
+// whose closed box the triangle touches must be marked (zero misses). The
+// geometry path may over-mark only next to such voxels (the pixel-column depth
+// span and the dilation reach at most one voxel further); the compute path's
+// exact test marks nothing else (zero extras).
 #include <algorithm>
 #include <cstdlib>
 
