@@ -63,10 +63,13 @@ void printTable(const render::FrameStats& stats, const std::vector<render::Memor
     std::printf("GPU memory: %.1f MiB\n", double(total) / (1024.0 * 1024.0));
 }
 
-void printVoxelGrid(const vxgi::VoxelVolumes& v, bool hardware) {
+void printVoxelGrid(const vxgi::VoxelVolumes& v, const vxgi::Voxelizer& voxelizer) {
     const vxgi::GridSpec& g = v.grid;
-    std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s conservative rasterization\n", g.n,
-                g.origin.x, g.origin.y, g.origin.z, g.voxelSize, hardware ? "hardware" : "geometry-shader");
+    const char* how = voxelizer.kind() == vxgi::VoxelizerKind::Compute ? "compute voxelizer (exact)"
+                      : voxelizer.hardwareConservative()               ? "hardware conservative rasterization"
+                                                                       : "geometry-shader conservative rasterization";
+    std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s\n", g.n, g.origin.x, g.origin.y,
+                g.origin.z, g.voxelSize, how);
     for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n))
         std::printf("  %-36s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
 }
@@ -212,7 +215,7 @@ int runRender(const RenderOptions& o) {
     for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     const bool moving = o.frames > 1 || !scene.animations.empty() || path;
     if (path) renderer.setCameraPath(std::move(path));
-    if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), renderer.voxelizer()->hardwareConservative());
+    if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), *renderer.voxelizer());
 
     const bool eachFrame = o.outExr.find('#') != std::string::npos;
     render::FrameStats stats, first;

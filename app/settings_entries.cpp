@@ -310,6 +310,16 @@ std::vector<Setting> imageAndVoxels() {
                      kAll, kNew},
                     {{"auto", true}, {"gs", false}}, FIELD(settings.hardwareConservative)),
              "gs", "'auto' (hardware when available) or 'gs'"),
+        with(choice({"voxelizer", kVoxels, "geometry|compute|auto", "",
+                     "how triangles become voxels: geometry = rasterized with a geometry shader (dilated, "
+                     "extras within one voxel), compute = binned in compute shaders with an exact triangle/voxel "
+                     "test (needs shaderFloat64), auto = the faster one on this device type",
+                     kAll, kNew},
+                    {{"geometry", vxgi::VoxelizerKind::Geometry},
+                     {"compute", vxgi::VoxelizerKind::Compute},
+                     {"auto", vxgi::VoxelizerKind::Auto}},
+                    FIELD(settings.voxelizer)),
+             "compute", "geometry, compute or auto"),
         with(choice({"view", kVoxels, "MODE", "",
                      "final, or voxels:albedo|normal|emission|radiance|directional: draw that voxel volume as cubes "
                      "from the camera instead",

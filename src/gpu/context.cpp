@@ -310,6 +310,8 @@ Context::Context(const ContextOptions& options) {
     on.features.samplerAnisotropy = f2.features.samplerAnisotropy;
     features.samplerAnisotropy = f2.features.samplerAnisotropy;
     on.features.multiDrawIndirect = f2.features.multiDrawIndirect;
+    on.features.shaderFloat64 = f2.features.shaderFloat64;
+    features.float64 = f2.features.shaderFloat64;
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

@@ -48,6 +48,7 @@ struct DeviceFeatures {
     bool atomicFloat = false;         // shaderImageFloat32AtomicAdd
     bool samplerAnisotropy = false;   // enabled on the device; samplers use anisotropy only then
     bool memoryBudget = false;        // VK_EXT_memory_budget enabled (deviceMemoryUsage() works)
+    bool float64 = false;             // shaderFloat64: the compute voxelizer's exact test (not on external devices)
 };
 
 class Context {

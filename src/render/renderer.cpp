@@ -103,7 +103,8 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
             settings.hasVoxelBox ? vxgi::gridForBox(settings.voxelBoxMin, settings.voxelBoxMax, settings.voxels)
                                  : vxgi::fitGrid(sceneGpu_->bounds, settings.voxels);
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid);
-        voxelizer_ = std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative);
+        voxelizer_ =
+            std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative, settings.voxelizer);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
         list_ = std::make_unique<vxgi::VoxelListPass>(ctx);
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
@@ -357,7 +358,7 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
     return a.width != b.width || a.height != b.height || a.supersample != b.supersample ||
            a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels ||
            a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
-           a.hardwareConservative != b.hardwareConservative || a.gather.traceScale != b.gather.traceScale ||
+           a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.gather.traceScale != b.gather.traceScale ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
 }

@@ -20,6 +20,7 @@
 #include "scene/scene.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_light_settings.h"
+#include "vxgi/voxelize.h"
 
 namespace dvsgi::gpuscene {
 class SceneGpu;
@@ -44,6 +45,7 @@ struct RenderSettings {
     bool hasVoxelBox = false;         // grid on a user box instead of the scene bounds
     glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
     bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
+    vxgi::VoxelizerKind voxelizer = vxgi::VoxelizerKind::Geometry;  // Auto: resolved by vxgi::resolveVoxelizer
     ViewSettings view;
     vxgi::VoxelLightSettings voxelLight;
     // Per-light occlusion mode for the voxel light pass, by light name
@@ -81,7 +83,6 @@ class VoxelViewPass;
 class GatherPass;
 }  // namespace dvsgi::render
 namespace dvsgi::vxgi {
-class Voxelizer;
 class VoxelListPass;
 class InjectPass;
 class AnisoFilterPass;

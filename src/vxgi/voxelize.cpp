@@ -13,6 +13,7 @@
 #include "shared/voxelize_pass.h"
 #include "vxgi/voxel_list.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxelize_compute.h"
 
 namespace dvsgi::vxgi {
 
@@ -33,10 +34,55 @@ const uint32_t kClear[] = {
 #include "shaders/clear_dynamic.comp.inc"
 };
 
+// What Auto picks on CPU devices (lavapipe), from the bench runs in
+// docs/benchmarks.md.
+constexpr VoxelizerKind kCpuVoxelizer = VoxelizerKind::Compute;
+
 }  // namespace
 
-Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative)
+VoxelizerKind resolveVoxelizer(const gpu::Context& ctx, VoxelizerKind kind) {
+    if (kind != VoxelizerKind::Auto) return kind;
+    if (!ctx.features.float64) return VoxelizerKind::Geometry;
+    switch (ctx.properties.deviceType) {
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return kCpuVoxelizer;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        // Not measured yet: large GPUs have few raster units per SM (Hopper's
+        // are few), and the geometry shader serializes primitives, while
+        // the compute path spreads large triangles over tiles. A GPU bench run
+        // must confirm it (docs/benchmarks.md).
+        return VoxelizerKind::Compute;
+    default:
+        return VoxelizerKind::Geometry;  // unmeasured: the path the suite has always run
+    }
+}
+
+const char* voxelizerName(VoxelizerKind kind) {
+    switch (kind) {
+    case VoxelizerKind::Geometry: return "geometry";
+    case VoxelizerKind::Compute: return "compute";
+    case VoxelizerKind::Auto: return "auto";
+    }
+    return "?";
+}
+
+Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative,
+                     VoxelizerKind kind)
     : ctx_(ctx), hardware_(hardwareConservative && ctx.features.conservativeRaster) {
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    gpu::LayoutDesc clearLayout;
+    clearLayout.bindings = {{sh::BIND_CLEAR_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                            {sh::BIND_CLEAR_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                            {sh::BIND_CLEAR_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                            {sh::BIND_CLEAR_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                            {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+    clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
+    if (resolveVoxelizer(ctx, kind) == VoxelizerKind::Compute) {
+        hardware_ = false;
+        compute_ = std::make_unique<ComputeVoxelizer>(ctx, scene);
+        return;
+    }
+
     gpu::GraphicsDesc g;
     g.vertex = kVert;
     g.geometry = kGeom;
@@ -57,16 +103,9 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
     layout.pushConstantBytes = sizeof(sh::VoxelizePush);
     layout.pushConstantStages = vgf;
     voxelize_ = gpu::Pipeline(ctx, g, layout, "voxelize");
-
-    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    gpu::LayoutDesc clearLayout;
-    clearLayout.bindings = {{sh::BIND_CLEAR_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                            {sh::BIND_CLEAR_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                            {sh::BIND_CLEAR_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                            {sh::BIND_CLEAR_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                            {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
-    clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
 }
+
+Voxelizer::~Voxelizer() = default;
 
 void Voxelizer::clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                          gpu::GpuTimers* timers) const {
@@ -105,10 +144,19 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpusc
                          const VoxelVolumes& v, VoxelizeMode mode, gpu::GpuTimers* timers) const {
     const bool dynamic = mode == VoxelizeMode::Dynamic;
     gpu::GpuTimerScope timer(timers, cmd, dynamic ? "voxelize dynamic" : "voxelize static");
+    if (compute_) {
+        compute_->voxelize(cmd, tracker, scene, v, mode);
+        return;
+    }
     tracker.image(v.accum, gpu::use::VoxelizeReadWrite)
         .image(v.flags, gpu::use::VoxelizeReadWrite)
         .buffer(v.list, gpu::use::FragmentReadWrite)
         .flush(cmd);
+    voxelizeRaster(cmd, scene, v, dynamic);
+}
+
+void Voxelizer::voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& scene, const VoxelVolumes& v,
+                               bool dynamic) const {
     const uint32_t n = v.grid.n;
     const VkRect2D area{{0, 0}, {n, n}};
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};

@@ -1,6 +1,11 @@
 // Conservative voxelization of the scene into the voxel attribute volume
-// (paper section V), and the per-frame clear of dynamic voxels.
+// (paper section V), and the per-frame clear of dynamic voxels. Two
+// implementations write the same sums through lib/voxel_accumulate.glsl: the
+// geometry-shader raster path (voxelize.vert/.geom/.frag) and the compute
+// path (voxelize_compute.h, voxelize.comp).
 #pragma once
+
+#include <memory>
 
 #include "gpu/pipeline.h"
 
@@ -14,15 +19,32 @@ class SceneGpu;
 
 namespace dvsgi::vxgi {
 
+class ComputeVoxelizer;
 class VoxelVolumes;
 
 enum class VoxelizeMode { Static, Dynamic };
 
+// Which voxelizer (--voxelizer). Geometry: one fragment per (pixel column,
+// layer) of the dominant-axis projection, dilated (extras within one voxel).
+// Compute: one sample per (triangle, voxel it touches), exact. Counts differ,
+// averages agree. Auto: resolveVoxelizer's choice for the device.
+enum class VoxelizerKind { Geometry, Compute, Auto };
+
+// Auto -> Compute or Geometry for this device (docs/benchmarks.md has the
+// measurements behind it); other kinds are returned as they are.
+VoxelizerKind resolveVoxelizer(const gpu::Context& ctx, VoxelizerKind kind);
+const char* voxelizerName(VoxelizerKind kind);  // "geometry", "compute", "auto"
+
 class Voxelizer {
 public:
     // hardwareConservative: use VK_EXT_conservative_rasterization instead of
-    // the geometry-shader dilation (only when the device has it).
-    Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative);
+    // the geometry-shader dilation (only when the device has it; geometry
+    // path only). kind: resolved with resolveVoxelizer.
+    Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative,
+              VoxelizerKind kind = VoxelizerKind::Geometry);
+    ~Voxelizer();
+    Voxelizer(const Voxelizer&) = delete;
+    Voxelizer& operator=(const Voxelizer&) = delete;
 
     // Zeroes attributes, flags, direct light and radiance: the start of a
     // static re-voxelization (the occupied-voxel list is reset beside it).
@@ -37,12 +59,17 @@ public:
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
     bool hardwareConservative() const { return hardware_; }
+    VoxelizerKind kind() const { return compute_ ? VoxelizerKind::Compute : VoxelizerKind::Geometry; }
 
 private:
+    void voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& scene, const VoxelVolumes& volumes,
+                        bool dynamic) const;
+
     const gpu::Context& ctx_;
     bool hardware_;
-    gpu::Pipeline voxelize_;
+    gpu::Pipeline voxelize_;  // geometry path only
     gpu::Pipeline clear_;
+    std::unique_ptr<ComputeVoxelizer> compute_;
 };
 
 }  // namespace dvsgi::vxgi

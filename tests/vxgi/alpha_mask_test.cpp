@@ -5,6 +5,7 @@
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
 #include "shared/voxel_data.h"
+#include "vox_helper.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::test {
@@ -12,9 +13,9 @@ namespace {
 
 namespace sh = dvsgi::shader;
 
-class AlphaMask : public GpuTest {};
+class AlphaMask : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
-TEST_F(AlphaMask, CutOutHalfLeavesNoVoxels) {
+TEST_P(AlphaMask, CutOutHalfLeavesNoVoxels) {
     scene::Scene s;
     // 8x1 texture: opaque on the left half (u < 0.5), transparent on the right.
     scene::Texture t;
@@ -31,6 +32,7 @@ TEST_F(AlphaMask, CutOutHalfLeavesNoVoxels) {
     render::RenderSettings rs;
     rs.width = rs.height = 16;
     rs.voxels = 32;
+    rs.voxelizer = GetParam();
     rs.hasVoxelBox = true;
     rs.voxelBoxMin = glm::vec3(-1.0f);
     rs.voxelBoxMax = glm::vec3(1.0f);
@@ -55,6 +57,8 @@ TEST_F(AlphaMask, CutOutHalfLeavesNoVoxels) {
     EXPECT_GT(left, 300);
     EXPECT_EQ(right, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, AlphaMask, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
 
 }  // namespace
 }  // namespace dvsgi::test

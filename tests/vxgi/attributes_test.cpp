@@ -1,11 +1,13 @@
 // What the voxels hold: summed attributes whose averages (sum / CH_COUNT) are
 // fragment-weighted means of the surfaces inside, without clamping.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.h"
+#include "scene/load.h"
 #include "vox_helper.h"
 
 namespace dvsgi::test {
@@ -13,7 +15,7 @@ namespace {
 
 namespace sh = dvsgi::shader;
 
-class VoxelAttributes : public GpuTest {};
+class VoxelAttributes : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
 const vxgi::GridSpec kGrid = exactGrid(glm::vec3(0.0f), 1.0f, 32);
 const glm::vec3 kRed(1, 0, 0), kBlue(0, 0, 1);
@@ -22,7 +24,8 @@ using Counts = std::vector<uint32_t>;  // per voxel, VoxelSet order
 
 // Fragments an axis-aligned rectangle lying strictly inside one voxel layer
 // sends to each voxel: one per triangle whose closed projection touches the
-// voxel's column. Both triangles of a rectangle touch the columns along their
+// voxel's column (geometry path), one per triangle touching the voxel
+// (compute path): the same numbers. Both triangles of a rectangle touch the columns along their
 // shared diagonal, so those get two.
 Counts expectedCounts(const scene::Scene& s) {
     Counts c(size_t(kGrid.n) * kGrid.n * kGrid.n, 0);
@@ -39,21 +42,21 @@ struct TwoLayers {
 };
 
 // Voxelizes rectangle A alone, B alone, and both together.
-TwoLayers twoRects(glm::vec3 albedoA, glm::vec3 loA, glm::vec3 hiA, float signA, glm::vec3 albedoB, glm::vec3 loB,
-                   glm::vec3 hiB, float signB) {
+TwoLayers twoRects(vxgi::VoxelizerKind kind, glm::vec3 albedoA, glm::vec3 loA, glm::vec3 hiA, float signA,
+                   glm::vec3 albedoB, glm::vec3 loB, glm::vec3 hiB, float signB) {
     scene::Scene sa, sb, sab;
     addRect(sa, addMaterial(sa, albedoA), loA, hiA, 1, signA);
     addRect(sb, addMaterial(sb, albedoB), loB, hiB, 1, signB);
     addRect(sab, addMaterial(sab, albedoA), loA, hiA, 1, signA);
     addRect(sab, addMaterial(sab, albedoB), loB, hiB, 1, signB);
-    return {voxelizeScene(sa, kGrid), voxelizeScene(sb, kGrid), voxelizeScene(sab, kGrid), expectedCounts(sa),
+    return {voxelizeScene(sa, kGrid, kind), voxelizeScene(sb, kGrid, kind), voxelizeScene(sab, kGrid, kind), expectedCounts(sa),
             expectedCounts(sb)};
 }
 
-TEST_F(VoxelAttributes, TwoSurfacesInOneLayerAverage) {
+TEST_P(VoxelAttributes, TwoSurfacesInOneLayerAverage) {
     // Planes y = 10.25 and 10.75 both lie in layer y = 10 and cover the faces
     // of the voxels x, z in [12, 20).
-    const TwoLayers r = twoRects(kRed, {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, kBlue, {12, 10.75f, 12},
+    const TwoLayers r = twoRects(GetParam(), kRed, {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, kBlue, {12, 10.75f, 12},
                                  {20, 10.75f, 20}, 1.0f);
     const int n = int(kGrid.n);
     int interior = 0, diagonal = 0;
@@ -85,9 +88,9 @@ TEST_F(VoxelAttributes, TwoSurfacesInOneLayerAverage) {
                 diagonal);
 }
 
-TEST_F(VoxelAttributes, PartialOverlapIsCountWeighted) {
+TEST_P(VoxelAttributes, PartialOverlapIsCountWeighted) {
     // Red covers [12, 20)^2, blue only x in [12, 16).
-    const TwoLayers r = twoRects(kRed, {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, kBlue, {12, 10.75f, 12},
+    const TwoLayers r = twoRects(GetParam(), kRed, {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, kBlue, {12, 10.75f, 12},
                                  {16, 10.75f, 20}, 1.0f);
     const int n = int(kGrid.n);
     int mixed = 0, redOnly = 0;
@@ -117,11 +120,11 @@ TEST_F(VoxelAttributes, PartialOverlapIsCountWeighted) {
     EXPECT_EQ(r.both.occupancy().count(), size_t(mixed + redOnly));
 }
 
-TEST_F(VoxelAttributes, EmissionIsNotClamped) {
+TEST_P(VoxelAttributes, EmissionIsNotClamped) {
     scene::Scene s;
     const glm::vec3 emission(500, 200, 1000);
     addRect(s, addMaterial(s, glm::vec3(0.2f, 0.4f, 0.6f), emission), {5, 7.5f, 5}, {11, 7.5f, 13}, 1, 1.0f);
-    const VoxelReadback r = voxelizeScene(s, kGrid);
+    const VoxelReadback r = voxelizeScene(s, kGrid, GetParam());
     const VoxelSet occ = r.occupancy();
     ASSERT_GT(occ.count(), 0u);
     for (int z = 0; z < int(kGrid.n); ++z)
@@ -134,8 +137,8 @@ TEST_F(VoxelAttributes, EmissionIsNotClamped) {
         }
 }
 
-TEST_F(VoxelAttributes, OppositeNormalsKeepBothOrientations) {
-    const TwoLayers r = twoRects(glm::vec3(0.5f), {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, glm::vec3(0.5f),
+TEST_P(VoxelAttributes, OppositeNormalsKeepBothOrientations) {
+    const TwoLayers r = twoRects(GetParam(), glm::vec3(0.5f), {12, 10.25f, 12}, {20, 10.25f, 20}, 1.0f, glm::vec3(0.5f),
                                  {12, 10.75f, 12}, {20, 10.75f, 20}, -1.0f);
     const VoxelSet occ = r.both.occupancy();
     ASSERT_GT(occ.count(), 0u);
@@ -149,14 +152,14 @@ TEST_F(VoxelAttributes, OppositeNormalsKeepBothOrientations) {
         }
 }
 
-TEST_F(VoxelAttributes, TiltedNormalWeightsSumToOne) {
+TEST_P(VoxelAttributes, TiltedNormalWeightsSumToOne) {
     // Normal (0, 0.6, 0.8) and a general one: the six weights of every voxel
     // sum to the fragment count, split by n_a^2.
     scene::Scene s;
     const int m = addMaterial(s, glm::vec3(0.5f));
     addTriangles(s, m, {{glm::vec3(4, 4, 7), glm::vec3(14, 4, 7), glm::vec3(4, 8, 4)}});
     addTriangles(s, m, {{glm::vec3(18, 18, 20), glm::vec3(27, 21, 18), glm::vec3(20, 27, 25)}});
-    const VoxelReadback r = voxelizeScene(s, kGrid);
+    const VoxelReadback r = voxelizeScene(s, kGrid, GetParam());
     const VoxelSet occ = r.occupancy();
     const glm::vec3 n1 = glm::normalize(glm::cross(glm::vec3(10, 0, 0), glm::vec3(0, 4, -3)));
     ASSERT_NEAR(n1.y, 0.6f, 1e-6f);
@@ -175,6 +178,47 @@ TEST_F(VoxelAttributes, TiltedNormalWeightsSumToOne) {
                 ++checked;
             }
     EXPECT_GT(checked, 50);
+}
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, VoxelAttributes, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
+
+// The two voxelizers store different counts (fragments per pixel column and
+// layer, samples per triangle), but a voxel that only one material touches
+// must average to that material's albedo and emission on both.
+TEST_F(GpuTest, VoxelizersAgreeOnSingleMaterialAverages) {
+    const scene::Scene s = scene::builtinCornellBox();
+    const auto items = scene::drawItems(s, scene::worldMatrices(s));
+    const vxgi::GridSpec grid = vxgi::fitGrid(scene::worldBounds(s, items), 32);
+    const VoxelReadback geometry = voxelizeScene(s, grid, vxgi::VoxelizerKind::Geometry);
+    const VoxelReadback compute = voxelizeScene(s, grid, vxgi::VoxelizerKind::Compute);
+    // Per voxel, the materials whose triangles touch it (reference test).
+    std::vector<uint32_t> materialsTouching(size_t(grid.n) * grid.n * grid.n, 0);
+    for (size_t m = 0; m < s.materials.size(); ++m) {
+        scene::Scene one = s;
+        for (scene::Primitive& p : one.primitives)
+            if (p.material != m) p.indices.clear();
+        const VoxelSet set = referenceVoxelize(voxelTriangles(one, grid), grid.n);
+        for (size_t i = 0; i < set.bits.size(); ++i) materialsTouching[i] += set.bits[i];
+    }
+    int compared = 0;
+    float worst = 0.0f;
+    const int n = int(grid.n);
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const size_t i = (size_t(z) * n + size_t(y)) * n + size_t(x);
+                if (materialsTouching[i] != 1 || geometry.count(x, y, z) == 0.0f || compute.count(x, y, z) == 0.0f)
+                    continue;
+                for (uint32_t ch : {sh::CH_ALBEDO_R, sh::CH_ALBEDO_G, sh::CH_ALBEDO_B, sh::CH_EMISSION_R,
+                                    sh::CH_EMISSION_G, sh::CH_EMISSION_B}) {
+                    const float a = geometry.average(x, y, z, ch), b = compute.average(x, y, z, ch);
+                    worst = std::max(worst, std::abs(a - b) / std::max(1.0f, std::abs(a)));
+                    EXPECT_NEAR(a, b, 1e-5f * std::max(1.0f, std::abs(a))) << x << " " << y << " " << z << " ch " << ch;
+                }
+                ++compared;
+            }
+    std::printf("single-material voxels compared: %d, largest relative difference %.2g\n", compared, double(worst));
+    EXPECT_GT(compared, 1000);
 }
 
 }  // namespace

@@ -47,9 +47,19 @@ std::string describe(const Triangle& t) {
 
 }  // namespace
 
-CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSpec>& grids, const std::string& label) {
+void expectCoverage(const CoverageReport& r, vxgi::VoxelizerKind kind) {
+    EXPECT_EQ(r.misses, 0u);
+    EXPECT_EQ(r.farExtras, 0u);
+    if (kind == vxgi::VoxelizerKind::Compute) {
+        EXPECT_EQ(r.extras, 0u);
+    }
+    EXPECT_GT(r.reference, 0u);
+}
+
+CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSpec>& grids, const std::string& label,
+                           vxgi::VoxelizerKind kind) {
     gpuscene::SceneGpu sceneGpu(context(), s);
-    vxgi::Voxelizer voxelizer(context(), sceneGpu, false);
+    vxgi::Voxelizer voxelizer(context(), sceneGpu, false, kind);
     CoverageReport total;
     size_t triangles = 0;
     for (size_t g = 0; g < grids.size(); ++g) {
@@ -86,21 +96,21 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
         total.extras += r.extras;
         total.farExtras += r.farExtras;
     }
-    std::printf("[%s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
+    std::printf("[%s, %s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
                 "extras %zu (%.1f%% of the reference), extras beyond 1 voxel %zu\n",
-                label.c_str(), triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
+                label.c_str(), vxgi::voxelizerName(kind), triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
                 total.misses, total.extras, total.reference ? 100.0 * double(total.extras) / double(total.reference) : 0.0,
                 total.farExtras);
     return total;
 }
 
 CoverageReport runCoverage(const std::vector<WorldTriangle>& tris, const std::vector<vxgi::GridSpec>& grids,
-                           const std::string& label) {
+                           const std::string& label, vxgi::VoxelizerKind kind) {
     scene::Scene s;
     s.source = "test:" + label;
     const int m = addMaterial(s, glm::vec3(0.8f));
     addTriangles(s, m, tris);
-    return runCoverage(s, grids, label);
+    return runCoverage(s, grids, label, kind);
 }
 
 }  // namespace dvsgi::test

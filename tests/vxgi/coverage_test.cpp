@@ -1,7 +1,8 @@
-// Conservative coverage of single triangles: every voxel whose closed box the
-// triangle touches must be marked (zero misses), and the GPU may over-mark
-// only next to such voxels (the pixel-column depth span and the dilation
-// reach at most one voxel further).
+// Conservative coverage of single triangles, for both voxelizers: every voxel
+// whose closed box the triangle touches must be marked (zero misses). The
+// geometry path may over-mark only next to such voxels (the pixel-column depth
+// span and the dilation reach at most one voxel further); the compute path's
+// exact test marks nothing else (zero extras).
 #include <algorithm>
 #include <cstdlib>
 
@@ -13,7 +14,7 @@
 namespace dvsgi::test {
 namespace {
 
-class VoxelCoverage : public GpuTest {};
+class VoxelCoverage : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
 // DVSGI_VXGI_STRESS=k runs k times as many random triangles (other seeds too).
 int stress() {
@@ -63,31 +64,25 @@ LocalTriangle randomTriangle(Rng& rng, double minSize, double maxSize) {
     return t;
 }
 
-void expectConservative(const CoverageReport& r) {
-    EXPECT_EQ(r.misses, 0u);
-    EXPECT_EQ(r.farExtras, 0u);
-    EXPECT_GT(r.reference, 0u);
-}
-
-TEST_F(VoxelCoverage, RandomTriangles32) {
+TEST_P(VoxelCoverage, RandomTriangles32) {
     Rng rng(1234 + uint64_t(stress() - 1));
     Batch batch({8, 16, 32});
     for (int i = 0; i < 200 * stress(); ++i) batch.add(randomTriangle(rng, 0.05, 20.0), rng);
     const Packing p = batch.pack(32);
-    expectConservative(runCoverage(p.tris, p.grids, "random, N=32"));
+    expectCoverage(runCoverage(p.tris, p.grids, "random, N=32", GetParam()), GetParam());
 }
 
-TEST_F(VoxelCoverage, RandomTriangles64) {
+TEST_P(VoxelCoverage, RandomTriangles64) {
     Rng rng(777 + uint64_t(stress() - 1));
     Batch batch({16, 32});
     for (int i = 0; i < 48 * stress(); ++i) batch.add(randomTriangle(rng, 0.05, 20.0), rng);
     const Packing p = batch.pack(64);
-    expectConservative(runCoverage(p.tris, p.grids, "random, N=64"));
+    expectCoverage(runCoverage(p.tris, p.grids, "random, N=64", GetParam()), GetParam());
 }
 
 // Needles (two long edges, a 0.01-voxel-wide apex) and slivers (one edge of
 // 1e-3 voxel), in random orientations and along the axes.
-TEST_F(VoxelCoverage, SliversAndNeedles) {
+TEST_P(VoxelCoverage, SliversAndNeedles) {
     Rng rng(42 + uint64_t(stress() - 1));
     Batch batch({8, 16, 32});
     for (int i = 0; i < 60 * stress(); ++i) {
@@ -119,7 +114,7 @@ TEST_F(VoxelCoverage, SliversAndNeedles) {
     };
     Packing p = batch.pack(32);
     p.add(onFaces, 16, 32);
-    expectConservative(runCoverage(p.tris, p.grids, "slivers and needles, N=32"));
+    expectCoverage(runCoverage(p.tris, p.grids, "slivers and needles, N=32", GetParam()), GetParam());
 }
 
 std::vector<LocalTriangle> latticeTriangles(Rng& rng) {
@@ -170,21 +165,21 @@ std::vector<LocalTriangle> latticeTriangles(Rng& rng) {
     return out;
 }
 
-TEST_F(VoxelCoverage, LatticeAligned32) {
+TEST_P(VoxelCoverage, LatticeAligned32) {
     Rng rng(5);
     Packing p;
     p.add(latticeTriangles(rng), 16, 32);
-    expectConservative(runCoverage(p.tris, p.grids, "lattice-aligned, N=32"));
+    expectCoverage(runCoverage(p.tris, p.grids, "lattice-aligned, N=32", GetParam()), GetParam());
 }
 
-TEST_F(VoxelCoverage, LatticeAligned64) {
+TEST_P(VoxelCoverage, LatticeAligned64) {
     Rng rng(6);
     Packing p;
     p.add(latticeTriangles(rng), 16, 64);
-    expectConservative(runCoverage(p.tris, p.grids, "lattice-aligned, N=64"));
+    expectCoverage(runCoverage(p.tris, p.grids, "lattice-aligned, N=64", GetParam()), GetParam());
 }
 
-TEST_F(VoxelCoverage, PartlyOutsideTheGrid) {
+TEST_P(VoxelCoverage, PartlyOutsideTheGrid) {
     Rng rng(9);
     // One triangle across each corner of a 32^3 grid: two vertices up to 12
     // voxels inside, one outside beyond the corner; the octants keep them apart.
@@ -204,14 +199,16 @@ TEST_F(VoxelCoverage, PartlyOutsideTheGrid) {
     corners.push_back({glm::vec3(14, 37, 15), glm::vec3(17.5f, 27.25f, 14), glm::vec3(16, 35, 18.5f)});
     corners.push_back({glm::vec3(15, 15, 40), glm::vec3(18, 16, 27), glm::vec3(16, 18.5f, 29)});
     const vxgi::GridSpec grid = exactGrid(glm::vec3(0.0f), 1.0f, 32);
-    expectConservative(runCoverage(corners, {grid}, "partly outside, N=32"));
+    expectCoverage(runCoverage(corners, {grid}, "partly outside, N=32", GetParam()), GetParam());
 
     // Larger than the grid: all vertices outside, the interior crossing it.
     const std::vector<WorldTriangle> huge = {
         {glm::vec3(-40, -30, 5.3f), glm::vec3(90, -20, 20.7f), glm::vec3(10, 80, 30.1f)},
     };
-    expectConservative(runCoverage(huge, {grid}, "larger than the grid, N=32"));
+    expectCoverage(runCoverage(huge, {grid}, "larger than the grid, N=32", GetParam()), GetParam());
 }
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, VoxelCoverage, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
 
 }  // namespace
 }  // namespace dvsgi::test

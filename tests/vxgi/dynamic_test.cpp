@@ -12,7 +12,7 @@ namespace {
 
 namespace sh = dvsgi::shader;
 
-class VoxelDynamic : public GpuTest {};
+class VoxelDynamic : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
 const vxgi::GridSpec kGrid = exactGrid(glm::vec3(0.0f), 1.0f, 32);
 const glm::vec3 kBoxHalf(1.5f, 1.5f, 1.25f);
@@ -26,7 +26,7 @@ void addStatic(scene::Scene& s) {
            glm::vec3(20.5f, 6.5f, 12.5f), false);
 }
 
-TEST_F(VoxelDynamic, MovingDynamicBoxLeavesStaticVoxelsAlone) {
+TEST_P(VoxelDynamic, MovingDynamicBoxLeavesStaticVoxelsAlone) {
     scene::Scene staticOnly;
     addStatic(staticOnly);
     scene::Scene full = staticOnly;
@@ -37,13 +37,13 @@ TEST_F(VoxelDynamic, MovingDynamicBoxLeavesStaticVoxelsAlone) {
     scene::Scene alone;
     alone.materials = full.materials;
     const int aloneBox = addBox(alone, boxMat, kBoxHalf, full.nodes[size_t(box)].translation, false);
-    VoxelRig aloneRig(alone, kGrid);
+    VoxelRig aloneRig(alone, kGrid, GetParam());
 
-    const VoxelReadback staticRef = voxelizeScene(staticOnly, kGrid);
+    const VoxelReadback staticRef = voxelizeScene(staticOnly, kGrid, GetParam());
     const VoxelSet staticOcc = staticRef.occupancy();
     ASSERT_GT(staticOcc.count(), 0u);
 
-    VoxelRig rig(full, kGrid);
+    VoxelRig rig(full, kGrid, GetParam());
     rig.fullVoxelize();
 
     // Touching the floor, in the open, through the floor and the pillar, high
@@ -101,14 +101,14 @@ TEST_F(VoxelDynamic, MovingDynamicBoxLeavesStaticVoxelsAlone) {
     }
 }
 
-TEST_F(VoxelDynamic, MovingStaticNodeNeedsFullRevoxelization) {
+TEST_P(VoxelDynamic, MovingStaticNodeNeedsFullRevoxelization) {
     scene::Scene s;
     addStatic(s);
     const int mover = addBox(s, addMaterial(s, glm::vec3(0.9f, 0.9f, 0.1f)), glm::vec3(2.0f, 1.0f, 1.5f),
                              glm::vec3(7.5f, 5.25f, 9.0f), false);
     addBox(s, addMaterial(s, glm::vec3(0.3f, 0.2f, 0.9f)), kBoxHalf, glm::vec3(14.1f, 6.2f, 11.4f), true);
 
-    VoxelRig rig(s, kGrid);
+    VoxelRig rig(s, kGrid, GetParam());
     rig.fullVoxelize();
     const VoxelSet before = rig.read().occupancy();
 
@@ -116,7 +116,7 @@ TEST_F(VoxelDynamic, MovingStaticNodeNeedsFullRevoxelization) {
     rig.updateTransforms(s);
     rig.fullVoxelize();
     const VoxelReadback got = rig.read();
-    const VoxelReadback fresh = voxelizeScene(s, kGrid);
+    const VoxelReadback fresh = voxelizeScene(s, kGrid, GetParam());
     const VoxelSet occ = got.occupancy(), want = fresh.occupancy();
 
     size_t left = 0;
@@ -135,6 +135,8 @@ TEST_F(VoxelDynamic, MovingStaticNodeNeedsFullRevoxelization) {
     EXPECT_GT(left, 0u) << "the old placement should have had voxels of its own";
     std::printf("%zu voxels of the old placement emptied\n", left);
 }
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, VoxelDynamic, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
 
 }  // namespace
 }  // namespace dvsgi::test

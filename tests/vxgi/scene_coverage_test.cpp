@@ -15,15 +15,9 @@
 namespace dvsgi::test {
 namespace {
 
-class SceneCoverage : public GpuTest {};
+class SceneCoverage : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
-void expectConservative(const CoverageReport& r) {
-    EXPECT_EQ(r.misses, 0u);
-    EXPECT_EQ(r.farExtras, 0u);
-    EXPECT_GT(r.reference, 0u);
-}
-
-TEST_F(SceneCoverage, CornellBox64) {
+TEST_P(SceneCoverage, CornellBox64) {
     const scene::Scene s = scene::builtinCornellBox();
     const auto items = scene::drawItems(s, scene::worldMatrices(s));
     const vxgi::GridSpec grid = vxgi::fitGrid(scene::worldBounds(s, items), 64);
@@ -36,7 +30,7 @@ TEST_F(SceneCoverage, CornellBox64) {
         for (const glm::dvec3& v : t.v) lo = glm::min(lo, v), hi = glm::max(hi, v);
     std::printf("Cornell box spans voxel coordinates (%.7f, %.7f, %.7f) - (%.7f, %.7f, %.7f)\n", lo.x, lo.y, lo.z,
                 hi.x, hi.y, hi.z);
-    expectConservative(runCoverage(s, {grid}, "Cornell box, N=64"));
+    expectCoverage(runCoverage(s, {grid}, "Cornell box, N=64", GetParam()), GetParam());
 }
 
 // Smooth-shaded meshes as one primitive each.
@@ -110,7 +104,7 @@ int addMeshNode(scene::Scene& s, scene::Primitive p, int material, glm::vec3 t, 
     return int(s.nodes.size() - 1);
 }
 
-TEST_F(SceneCoverage, IcosphereAndTorus32) {
+TEST_P(SceneCoverage, IcosphereAndTorus32) {
     // Grid [-2, 2]^3 with voxels of 1/8: both exact in float.
     const vxgi::GridSpec grid = vxgi::gridForBox(glm::vec3(-2.0f), glm::vec3(2.0f), 32);
     ASSERT_EQ(grid.voxelSize, 0.125f);
@@ -123,8 +117,10 @@ TEST_F(SceneCoverage, IcosphereAndTorus32) {
     // 576 triangles, tube radius 2.4 voxels, tilted.
     addMeshNode(s, torus(0.9, 0.3, 32, 9), m, glm::vec3(0.6f, -0.55f, 0.1f),
                 glm::angleAxis(1.1f, glm::normalize(glm::vec3(-1, 0.5f, 0.2f))), glm::vec3(1.0f));
-    expectConservative(runCoverage(s, {grid}, "icosphere and torus, N=32"));
+    expectCoverage(runCoverage(s, {grid}, "icosphere and torus, N=32", GetParam()), GetParam());
 }
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, SceneCoverage, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
 
 }  // namespace
 }  // namespace dvsgi::test

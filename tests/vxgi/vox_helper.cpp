@@ -27,8 +27,16 @@ VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes) {
     return r;
 }
 
-VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid)
-    : sceneGpu(context(), scene), voxelizer(context(), sceneGpu, false), list(context()), volumes(context(), grid), tracker(volumeTracker(volumes)) {}
+std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind>& info) {
+    return vxgi::voxelizerName(info.param);
+}
+
+VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid, vxgi::VoxelizerKind kind)
+    : sceneGpu(context(), scene),
+      voxelizer(context(), sceneGpu, false, kind),
+      list(context()),
+      volumes(context(), grid),
+      tracker(volumeTracker(volumes)) {}
 
 void VoxelRig::fullVoxelize() {
     context().submitAndWait([&](VkCommandBuffer cmd) {
@@ -54,8 +62,8 @@ void VoxelRig::updateTransforms(const scene::Scene& scene) {
     sceneGpu.updateDraws(context(), scene, scene::drawItems(scene, scene::worldMatrices(scene)));
 }
 
-VoxelReadback voxelizeScene(const scene::Scene& scene, const vxgi::GridSpec& grid) {
-    VoxelRig rig(scene, grid);
+VoxelReadback voxelizeScene(const scene::Scene& scene, const vxgi::GridSpec& grid, vxgi::VoxelizerKind kind) {
+    VoxelRig rig(scene, grid, kind);
     rig.fullVoxelize();
     return rig.read();
 }

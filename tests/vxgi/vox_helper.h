@@ -4,7 +4,10 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "gpu/tracker.h"
 #include "gpuscene/scene_gpu.h"
@@ -33,10 +36,15 @@ struct VoxelReadback {
 
 VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes);
 
-// A scene, its GPU copy, a voxelizer (geometry-shader dilation) and volumes
-// for one grid: what the dynamic tests drive frame by frame.
+// Both voxelizers, for tests parametrized over them, and their test names.
+inline constexpr vxgi::VoxelizerKind kVoxelizers[] = {vxgi::VoxelizerKind::Geometry, vxgi::VoxelizerKind::Compute};
+std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind>& info);
+
+// A scene, its GPU copy, a voxelizer (geometry-shader dilation or compute)
+// and volumes for one grid: what the dynamic tests drive frame by frame.
 struct VoxelRig {
-    VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid);
+    VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid,
+             vxgi::VoxelizerKind kind = vxgi::VoxelizerKind::Geometry);
     void fullVoxelize();       // clearAll + static + dynamic, as after a load (with the list)
     void dynamicFrame();       // clearDynamic + dynamic, as the Renderer's later frames
     void updateTransforms(const scene::Scene& scene);  // after moving nodes
@@ -50,7 +58,8 @@ struct VoxelRig {
 };
 
 // Voxelization from scratch of every draw (static and dynamic) into a fresh grid.
-VoxelReadback voxelizeScene(const scene::Scene& scene, const vxgi::GridSpec& grid);
+VoxelReadback voxelizeScene(const scene::Scene& scene, const vxgi::GridSpec& grid,
+                            vxgi::VoxelizerKind kind = vxgi::VoxelizerKind::Geometry);
 
 // ---- scene construction ----
 

@@ -18,7 +18,7 @@ namespace {
 
 namespace sh = dvsgi::shader;
 
-class VoxelList : public GpuTest {};
+class VoxelList : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
 const vxgi::GridSpec kGrid = exactGrid(glm::vec3(0.0f), 1.0f, 32);
 
@@ -76,16 +76,18 @@ void addStatic(scene::Scene& s) {
 
 std::vector<uint16_t> halfOnes(uint32_t n) { return std::vector<uint16_t>(size_t(n) * n * n * 4, 0x3C00); }
 
-TEST_F(VoxelList, HoldsEveryOccupiedVoxelOnceStaticFirstAsADynamicBoxMoves) {
+TEST_P(VoxelList, HoldsEveryOccupiedVoxelOnceStaticFirstAsADynamicBoxMoves) {
     scene::Scene s;
     addStatic(s);
     scene::Scene staticOnly = s;
     const int box = addBox(s, addMaterial(s, glm::vec3(0.3f, 0.2f, 0.9f)), glm::vec3(1.5f, 1.5f, 1.25f),
                            glm::vec3(8.3f, 3.6f, 8.7f), true);
-    const VoxelSet staticSet = voxelizeScene(staticOnly, kGrid).occupancy();
+    VoxelRig staticRig(staticOnly, kGrid, GetParam());
+    staticRig.fullVoxelize();
+    const VoxelSet staticSet = staticRig.read().occupancy();
     ASSERT_GT(staticSet.count(), 0u);
 
-    VoxelRig rig(s, kGrid);
+    VoxelRig rig(s, kGrid, GetParam());
     rig.fullVoxelize();
     VoxelSet occupied = rig.read().occupancy();
     expectListMatches(readList(rig.volumes), occupied, staticSet);
@@ -128,15 +130,17 @@ TEST_F(VoxelList, HoldsEveryOccupiedVoxelOnceStaticFirstAsADynamicBoxMoves) {
     }
 }
 
-TEST_F(VoxelList, RebuildFromTheCountsListsTheSameVoxels) {
+TEST_P(VoxelList, RebuildFromTheCountsListsTheSameVoxels) {
     scene::Scene s;
     addStatic(s);
-    VoxelRig rig(s, kGrid);
+    VoxelRig rig(s, kGrid, GetParam());
     rig.fullVoxelize();
     const VoxelSet occupied = rig.read().occupancy();
     context().submitAndWait([&](VkCommandBuffer cmd) { rig.list.rebuild(cmd, rig.tracker, rig.volumes); });
     expectListMatches(readList(rig.volumes), occupied, occupied);
 }
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, VoxelList, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
 
 }  // namespace
 }  // namespace dvsgi::test

@@ -1,0 +1,37 @@
+// Exact triangle / closed voxel box overlap by the separating-axis theorem
+// (Akenine-Moeller). Double precision with the very operations, in the very
+// order, of the CPU reference (tests/vxgi/sat.cpp), and `precise` so no
+// multiply-add is fused: given the same float vertices both decide every tie
+// (a triangle touching a voxel's face, edge or corner) alike. Needs
+// shaderFloat64.
+
+dvec3 crossExact(dvec3 x, dvec3 y) {  // glm::cross's operation order
+    precise dvec3 r = dvec3(x.y * y.z - y.y * x.z, x.z * y.x - y.z * x.x, x.x * y.y - y.x * x.y);
+    return r;
+}
+
+// Triangle vertices relative to the box centre; the box is [-0.5, 0.5]^3.
+bool separatedOn(dvec3 axis, dvec3 v0, dvec3 v1, dvec3 v2) {
+    precise double p0 = (axis.x * v0.x + axis.y * v0.y) + axis.z * v0.z;
+    precise double p1 = (axis.x * v1.x + axis.y * v1.y) + axis.z * v1.z;
+    precise double p2 = (axis.x * v2.x + axis.y * v2.y) + axis.z * v2.z;
+    precise double r = (0.5LF * abs(axis.x) + 0.5LF * abs(axis.y)) + 0.5LF * abs(axis.z);
+    return min(p0, min(p1, p2)) > r || max(p0, max(p1, p2)) < -r;
+}
+
+// v: the triangle in voxel units; e: its edges v1 - v0, v2 - v1, v0 - v2;
+// n: crossExact(e0, e1). The three box axes are not tested: callers ask only
+// about voxels inside the triangle's closed bounding box, which they cannot
+// separate.
+bool triangleTouchesVoxel(dvec3 v[3], dvec3 e[3], dvec3 n, ivec3 voxel) {
+    dvec3 c = dvec3(voxel) + 0.5LF;
+    dvec3 v0 = v[0] - c, v1 = v[1] - c, v2 = v[2] - c;  // exact: float coordinates, half-integer centre
+    if (separatedOn(n, v0, v1, v2)) return false;
+    for (int i = 0; i < 3; ++i) {
+        // e x (1,0,0), e x (0,1,0), e x (0,0,1), written out as glm computes them.
+        if (separatedOn(dvec3(0.0LF, e[i].z, -e[i].y), v0, v1, v2)) return false;
+        if (separatedOn(dvec3(-e[i].z, 0.0LF, e[i].x), v0, v1, v2)) return false;
+        if (separatedOn(dvec3(e[i].y, -e[i].x, 0.0LF), v0, v1, v2)) return false;
+    }
+    return true;
+}

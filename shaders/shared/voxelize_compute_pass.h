@@ -1,0 +1,68 @@
+// Compute voxelization (vxgi/voxelize_compute.cpp, voxelize.comp): triangles
+// binned to voxels with an exact triangle/box test; shared by C++ and GLSL.
+#ifndef DVSGI_SHARED_VOXELIZE_COMPUTE_PASS_H
+#define DVSGI_SHARED_VOXELIZE_COMPUTE_PASS_H
+
+#include "common.h"
+
+DVSGI_BEGIN
+
+// One invocation per triangle in the triangle phase, one per voxel column of
+// a tile in the tile phase: both use groups of VOXC_GROUP = VOXC_TILE^2.
+DVSGI_CONST(uint, VOXC_GROUP, 64);
+DVSGI_CONST(uint, VOXC_TILE, 8);
+// A triangle whose (grid-clipped) footprint along its dominant axis spans more
+// voxel columns than this is split into VOXC_TILE^2 tiles, one workgroup each,
+// instead of being walked by its one invocation (a Cornell wall at 128^3 is
+// 16384 columns: serial, it would hold the whole dispatch back).
+DVSGI_CONST(uint, VOXC_SMALL_COLUMNS, 32);
+// Tile work items one triangle phase can queue (the indirect dispatch's x
+// count stays within maxComputeWorkGroupCount[0] >= 65535). A triangle whose
+// tiles no longer fit is walked by its own invocation: slower, same result.
+DVSGI_CONST(uint, VOXC_MAX_TILES, 65535);
+
+DVSGI_CONST(uint, VOXC_PHASE_TRIANGLES, 0);
+DVSGI_CONST(uint, VOXC_PHASE_TILES, 1);
+
+// One workgroup of the triangle phase: up to VOXC_GROUP consecutive triangles
+// of one draw, so the material (and its texture index) is uniform within the
+// workgroup, as Vulkan requires without non-uniform descriptor indexing.
+struct VoxcGroup {
+    uvec4 draw;  // x draw index, y first index of the group's first triangle, z vertex offset (int bits),
+                 // w triangles in the group (1..VOXC_GROUP)
+};
+DVSGI_CHECK_SIZE(VoxcGroup, 16);
+
+// A queued tile: x draw, y first index of the triangle, z vertex offset (int
+// bits), w tile index (row-major over the triangle's footprint).
+struct VoxcTile {
+    uvec4 item;
+};
+DVSGI_CHECK_SIZE(VoxcTile, 16);
+
+struct VoxelizeComputePush {
+    uvec4 ids;  // x first VoxcGroup of this mode, y group count, z VOXELIZE_STATIC/DYNAMIC, w VOXC_PHASE_*
+    uvec4 dispatch;  // x workgroups per row of a 2D triangle-phase dispatch (groups beyond 65535 wrap into y),
+                     // y = 4 (bilinear taps), z = 2 (textures per material): loop counts the shader
+                     // compiler must not see, so each texture fetch stays one site (lib/material.glsl)
+};
+DVSGI_CHECK_SIZE(VoxelizeComputePush, 32);
+
+DVSGI_CONST(uint, BIND_VOXC_GRID, 0);
+DVSGI_CONST(uint, BIND_VOXC_DRAWS, 1);
+DVSGI_CONST(uint, BIND_VOXC_MATERIALS, 2);
+DVSGI_CONST(uint, BIND_VOXC_ACCUM, 3);
+DVSGI_CONST(uint, BIND_VOXC_FLAGS, 4);
+DVSGI_CONST(uint, BIND_VOXC_VERTICES, 5);  // scene::Vertex, VOXC_VERTEX_FLOATS floats each
+DVSGI_CONST(uint, BIND_VOXC_INDICES, 6);
+DVSGI_CONST(uint, BIND_VOXC_GROUPS, 7);
+DVSGI_CONST(uint, BIND_VOXC_TILES, 8);     // VoxcTile[VOXC_MAX_TILES]
+DVSGI_CONST(uint, BIND_VOXC_LIST, 10);     // occupied-voxel list (appended to)
+DVSGI_CONST(uint, BIND_VOXC_INDIRECT, 9);  // uint[4]: the tile phase's dispatch (x = tiles queued), y = 1, z = 1
+
+// scene::Vertex as floats: position 0-2, normal 3-5, uv 6-7, tangent 8-11.
+DVSGI_CONST(uint, VOXC_VERTEX_FLOATS, 12);
+
+DVSGI_END
+
+#endif

@@ -1,0 +1,240 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_atomic_float : require
+#include "shared/geometry_pass.h"
+#include "shared/scene_data.h"
+#include "shared/voxel_data.h"
+#include "shared/voxelize_compute_pass.h"
+#include "shared/voxelize_pass.h"
+#include "shared/voxel_list_pass.h"
+
+// Compute voxelization: every voxel whose closed box a triangle touches, by an
+// exact separating-axis test, gets one sample of the triangle's material.
+//
+// Triangle phase: one invocation per triangle (a workgroup never mixes draws,
+// so texture indices stay uniform). The triangle is projected along its
+// dominant axis, as voxelize.geom does; each voxel column of its clipped
+// bounding box there holds at most a few candidate layers, those the plane
+// crosses over the column (|slope| <= 1 per axis), and the exact test decides
+// each. A triangle with more than VOXC_SMALL_COLUMNS columns queues tiles of
+// VOXC_TILE^2 columns instead. Tile phase (indirect): one workgroup per tile,
+// one invocation per column.
+//
+// The sample: the material at the point of the triangle nearest the voxel
+// centre. It lies inside the triangle, so its UV never leaves the triangle's
+// texture region (the dilated raster path extrapolates); it is the part of
+// the triangle the voxel holds, or the nearest part when only an edge or
+// corner enters the box.
+layout(local_size_x = VOXC_GROUP) in;
+
+layout(set = 0, binding = BIND_VOXC_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_VOXC_DRAWS, std430) readonly buffer Draws { GpuDraw draws[]; };
+layout(set = 0, binding = BIND_VOXC_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = BIND_VOXC_ACCUM, r32f) uniform coherent image3D accum;
+layout(set = 0, binding = BIND_VOXC_FLAGS, r8ui) uniform coherent uimage3D flags;
+layout(set = 0, binding = BIND_VOXC_VERTICES, std430) readonly buffer Vertices { float vertexData[]; };
+layout(set = 0, binding = BIND_VOXC_INDICES, std430) readonly buffer Indices { uint indexData[]; };
+layout(set = 0, binding = BIND_VOXC_GROUPS, std430) readonly buffer Groups { VoxcGroup groups[]; };
+layout(set = 0, binding = BIND_VOXC_TILES, std430) buffer Tiles { VoxcTile tiles[]; };
+layout(set = 0, binding = BIND_VOXC_INDIRECT, std430) buffer Indirect { uint indirect[4]; };
+layout(set = 0, binding = BIND_VOXC_LIST, std430) buffer List {
+    VoxelListHeader header;
+    uint entries[];
+} list;
+layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
+layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
+layout(push_constant) uniform Push { VoxelizeComputePush pc; };
+
+#define MATERIAL_EXPLICIT_LOD
+#include "lib/material.glsl"
+#include "lib/triangle_box.glsl"
+#include "lib/voxel_list.glsl"
+#include "lib/voxel_list_append.glsl"
+#include "lib/voxel_accumulate.glsl"
+
+struct Triangle {
+    vec3 p[3];       // voxel units, bit-identical to the CPU reference's
+    dvec3 v[3];      // the same, for the exact test
+    dvec3 e[3];      // v1 - v0, v2 - v1, v0 - v2
+    dvec3 n;         // crossExact(e0, e1)
+    vec3 normal[3];  // world vertex normals
+    vec2 uv[3];
+    uint axis;       // dominant axis of the face normal (voxelize.geom's choice)
+    ivec3 lo, hi;    // closed voxel range of the bounding box in the grid, projected order (z = axis)
+    vec2 slope;      // plane: dz/du, dz/dv in projected order
+    bool planar;     // false for a degenerate triangle: every layer of the box is a candidate
+    uint material;
+};
+
+vec3 project(vec3 p, uint axis) { return axis == 0u ? p.yzx : (axis == 1u ? p.zxy : p.xyz); }
+ivec3 project(ivec3 p, uint axis) { return axis == 0u ? p.yzx : (axis == 1u ? p.zxy : p.xyz); }
+ivec3 unproject(ivec3 p, uint axis) { return axis == 0u ? p.zxy : (axis == 1u ? p.yzx : p.xyz); }
+
+vec3 loadVec3(uint at) { return vec3(vertexData[at], vertexData[at + 1u], vertexData[at + 2u]); }
+
+// False when the triangle's bounding box misses the grid.
+bool loadTriangle(uint draw, uint firstIndex, int vertexOffset, out Triangle t) {
+    GpuDraw d = draws[draw];
+    mat3 normalMatrix = mat3(d.normalMatrix);
+    for (uint k = 0u; k < 3u; ++k) {
+        uint at = uint(int(indexData[firstIndex + k]) + vertexOffset) * VOXC_VERTEX_FLOATS;
+        vec3 pos = loadVec3(at);
+        // glm's mat4 * vec4 order, then (world - origin) / size: the tests'
+        // reference sees the same float coordinates.
+        precise vec3 a0 = d.model[0].xyz * pos.x + d.model[1].xyz * pos.y;
+        precise vec3 a1 = d.model[2].xyz * pos.z + d.model[3].xyz;
+        precise vec3 world = a0 + a1;
+        precise vec3 p = (world - grid.originSize.xyz) / grid.originSize.w;
+        t.p[k] = p;
+        t.v[k] = dvec3(p);
+        t.normal[k] = normalMatrix * loadVec3(at + 3u);
+        t.uv[k] = vec2(vertexData[at + 6u], vertexData[at + 7u]);
+    }
+    t.material = d.info.x;
+    for (int k = 0; k < 3; ++k) t.e[k] = t.v[(k + 1) % 3] - t.v[k];
+    t.n = crossExact(t.e[0], t.e[1]);
+
+    vec3 faceNormal = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+    vec3 an = abs(faceNormal);
+    t.axis = (an.x >= an.y && an.x >= an.z) ? 0u : (an.y >= an.z ? 1u : 2u);
+    // Closed boxes: a coordinate on a voxel face touches the voxels on both sides.
+    vec3 lo = min(t.p[0], min(t.p[1], t.p[2])), hi = max(t.p[0], max(t.p[1], t.p[2]));
+    int N = int(grid.dims.x);
+    ivec3 a = max(ivec3(ceil(lo)) - 1, ivec3(0)), b = min(ivec3(floor(hi)), ivec3(N - 1));
+    if (any(greaterThan(a, b))) return false;
+    t.lo = project(a, t.axis);
+    t.hi = project(b, t.axis);
+    dvec3 nq = t.axis == 0u ? t.n.yzx : (t.axis == 1u ? t.n.zxy : t.n.xyz);
+    t.planar = nq.z != 0.0LF;
+    t.slope = t.planar ? vec2(-nq.xy / nq.z) : vec2(0.0);
+    // Texture level: texture area per unit of surface area (voxel units).
+    vec2 du = t.uv[1] - t.uv[0], dv = t.uv[2] - t.uv[0];
+    float area = length(faceNormal);
+    materialUvDensity = area > 0.0 ? abs(du.x * dv.y - du.y * dv.x) / area : 0.0;
+    return true;
+}
+
+// Barycentric coordinates of the point of triangle abc nearest p (Ericson,
+// Real-Time Collision Detection 5.1.5); the centroid for a degenerate one.
+vec3 nearestBarycentric(vec3 p, vec3 a, vec3 b, vec3 c) {
+    vec3 ab = b - a, ac = c - a, ap = p - a;
+    float d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return vec3(1, 0, 0);
+    vec3 bp = p - b;
+    float d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0.0 && d4 <= d3) return vec3(0, 1, 0);
+    vec3 cp = p - c;
+    float d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0.0 && d5 <= d6) return vec3(0, 0, 1);
+    float vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    vec3 bary;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+        float s = d1 / (d1 - d3);
+        bary = vec3(1.0 - s, s, 0.0);
+    } else if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+        float s = d2 / (d2 - d6);
+        bary = vec3(1.0 - s, 0.0, s);
+    } else if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0) {
+        float s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        bary = vec3(0.0, 1.0 - s, s);
+    } else {
+        float inv = 1.0 / (va + vb + vc);
+        bary = vec3(1.0 - (vb + vc) * inv, vb * inv, vc * inv);
+    }
+    return any(isnan(bary)) || any(isinf(bary)) ? vec3(1.0 / 3.0) : bary;
+}
+
+// One sample of the triangle's material into `voxel` (projected coordinates
+// `q`: the alpha-blend threshold uses the pixel centre voxelize.frag would).
+void addSample(Triangle t, ivec3 voxel, ivec3 q) {
+    vec3 bary = nearestBarycentric(vec3(voxel) + 0.5, t.p[0], t.p[1], t.p[2]);
+    vec2 uv = bary.x * t.uv[0] + bary.y * t.uv[1] + bary.z * t.uv[2];
+    GpuMaterial m = materials[t.material];
+    // Base colour and emissive texture through one sampleTexture call (see
+    // material.glsl: each call site costs lavapipe a 96-way switch).
+    vec4 texel[2] = vec4[2](vec4(1.0), vec4(1.0));
+    for (uint i = 0u; i < pc.dispatch.z; ++i) {
+        int index = i == 0u ? m.textures.x : m.textures.y;
+        if (index != NO_TEXTURE) texel[i] = sampleTexture(index, uv);
+    }
+    vec4 base = m.baseColor * texel[0];  // sRGB views decode
+    if (!materialCovers(m, base.a, vec2(q.xy) + 0.5)) return;
+    vec3 emission = m.emission.rgb * texel[1].rgb;
+    vec3 n = normalize(bary.x * t.normal[0] + bary.y * t.normal[1] + bary.z * t.normal[2]);
+    accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
+}
+
+void voxelizeColumn(Triangle t, ivec2 column) {
+    int first = t.lo.z, last = t.hi.z;
+    if (t.planar) {
+        // The plane's depth over the closed column, from vertex 0; the margin
+        // covers float rounding (candidates only: the exact test decides).
+        vec3 q0 = project(t.p[0], t.axis);
+        vec2 d = vec2(column) - q0.xy;
+        float z = q0.z + t.slope.x * d.x + t.slope.y * d.y;
+        float zmin = z + min(t.slope.x, 0.0) + min(t.slope.y, 0.0);
+        float zmax = z + max(t.slope.x, 0.0) + max(t.slope.y, 0.0);
+        float margin = 1e-3 + 1e-5 * (abs(q0.z) + abs(d.x) + abs(d.y));
+        first = max(first, int(floor(zmin - margin)));
+        last = min(last, int(floor(zmax + margin)));
+    }
+    for (int layer = first; layer <= last; ++layer) {
+        ivec3 q = ivec3(column, layer);
+        ivec3 voxel = unproject(q, t.axis);
+        if (triangleTouchesVoxel(t.v, t.e, t.n, voxel)) addSample(t, voxel, q);
+    }
+}
+
+// Claims `count` consecutive tile slots; false when they do not fit.
+bool reserveTiles(uint count, out uint slot) {
+    uint seen = 0u;
+    for (;;) {
+        if (seen + count > VOXC_MAX_TILES) return false;
+        uint before = atomicCompSwap(indirect[0], seen, seen + count);
+        if (before == seen) {
+            slot = seen;
+            return true;
+        }
+        seen = before;
+    }
+}
+
+void trianglePhase() {
+    uint groupIndex = gl_WorkGroupID.y * pc.dispatch.x + gl_WorkGroupID.x;
+    if (groupIndex >= pc.ids.y) return;
+    VoxcGroup g = groups[pc.ids.x + groupIndex];
+    uint local = gl_LocalInvocationID.x;
+    if (local >= g.draw.w) return;
+    uint firstIndex = g.draw.y + 3u * local;
+    Triangle t;
+    if (!loadTriangle(g.draw.x, firstIndex, int(g.draw.z), t)) return;
+    ivec2 span = t.hi.xy - t.lo.xy + 1;
+    if (uint(span.x * span.y) > VOXC_SMALL_COLUMNS) {
+        uvec2 tileSpan = (uvec2(span) + VOXC_TILE - 1u) / VOXC_TILE;
+        uint count = tileSpan.x * tileSpan.y, slot;
+        if (reserveTiles(count, slot)) {
+            for (uint i = 0u; i < count; ++i) tiles[slot + i].item = uvec4(g.draw.x, firstIndex, g.draw.z, i);
+            return;
+        }
+    }
+    for (int v = t.lo.y; v <= t.hi.y; ++v)
+        for (int u = t.lo.x; u <= t.hi.x; ++u) voxelizeColumn(t, ivec2(u, v));
+}
+
+void tilePhase() {
+    uvec4 item = tiles[gl_WorkGroupID.x].item;
+    Triangle t;
+    if (!loadTriangle(item.x, item.y, int(item.z), t)) return;
+    int tilesPerRow = (t.hi.x - t.lo.x + int(VOXC_TILE)) / int(VOXC_TILE);
+    int tile = int(item.w), local = int(gl_LocalInvocationID.x);
+    ivec2 column = t.lo.xy + ivec2(tile % tilesPerRow, tile / tilesPerRow) * int(VOXC_TILE) +
+                   ivec2(local % int(VOXC_TILE), local / int(VOXC_TILE));
+    if (any(greaterThan(column, t.hi.xy))) return;
+    voxelizeColumn(t, column);
+}
+
+void main() {
+    materialTaps = pc.dispatch.y;
+    if (pc.ids.w == VOXC_PHASE_TRIANGLES) trianglePhase();
+    else tilePhase();
+}

@@ -1,0 +1,144 @@
+#include "vxgi/voxelize_compute.h"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gpu/context.h"
+#include "gpu/tracker.h"
+#include "gpu/transfer.h"
+#include "gpuscene/scene_gpu.h"
+#include "shared/geometry_pass.h"
+#include "shared/voxelize_compute_pass.h"
+#include "shared/voxelize_pass.h"
+#include "vxgi/volumes.h"
+#include "vxgi/voxelize.h"
+
+namespace dvsgi::vxgi {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+const uint32_t kComp[] = {
+#include "shaders/voxelize.comp.inc"
+};
+
+// Groups of up to VOXC_GROUP consecutive triangles, never two draws in one.
+void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out) {
+    for (uint32_t d = 0; d < scene.ranges.size(); ++d) {
+        const gpuscene::DrawRange& r = scene.ranges[d];
+        if (r.dynamic != dynamic) continue;
+        const uint32_t triangles = r.indexCount / 3;
+        for (uint32_t first = 0; first < triangles; first += sh::VOXC_GROUP)
+            out.push_back({glm::uvec4(d, r.firstIndex + 3 * first, std::bit_cast<uint32_t>(r.vertexOffset),
+                                      std::min(sh::VOXC_GROUP, triangles - first))});
+    }
+}
+
+}  // namespace
+
+ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene)
+    : ctx_(ctx), drawCount_(scene.ranges.size()) {
+    if (!ctx.features.float64)
+        throw std::runtime_error("voxelizer: compute needs the Vulkan feature shaderFloat64 (its exact triangle/voxel "
+                                 "test), which " + ctx.deviceName + " lacks or the application did not enable; "
+                                 "use geometry");
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    gpu::LayoutDesc layout;
+    layout.bindings = {{sh::BIND_VOXC_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                       {sh::BIND_VOXC_DRAWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_VOXC_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_VOXC_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_GROUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_INDIRECT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+    layout.extraSet = scene.textureTable->layout();
+    layout.pushConstantBytes = sizeof(sh::VoxelizeComputePush);
+    layout.pushConstantStages = cs;
+    pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxelize (compute)");
+
+    std::vector<sh::VoxcGroup> groups;
+    appendGroups(scene, false, groups);
+    staticGroups_ = uint32_t(groups.size());
+    appendGroups(scene, true, groups);
+    dynamicGroups_ = uint32_t(groups.size()) - staticGroups_;
+    if (groups.empty()) groups.push_back({});  // a buffer needs a size; no dispatch reads it
+    groups_ = gpu::createBuffer(ctx, groups.data(), groups.size() * sizeof(sh::VoxcGroup),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "voxelize groups");
+    tiles_ = gpu::Buffer(ctx, sh::VOXC_MAX_TILES * sizeof(sh::VoxcTile), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                         gpu::MemoryUse::Device, "voxelize tiles");
+    indirect_ = gpu::Buffer(ctx, 4 * sizeof(uint32_t),
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            gpu::MemoryUse::Device, "voxelize tile dispatch");
+}
+
+void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
+                                const VoxelVolumes& v, VoxelizeMode mode) const {
+    // The group table was built from this scene's draws.
+    if (scene.ranges.size() != drawCount_)
+        throw std::logic_error("ComputeVoxelizer::voxelize: the scene's draws changed");
+    const bool dynamic = mode == VoxelizeMode::Dynamic;
+    const uint32_t first = dynamic ? staticGroups_ : 0, count = dynamic ? dynamicGroups_ : staticGroups_;
+    if (count == 0) return;
+
+    // Buffers are not images: their uses are stage + access pairs (as bounce.cpp's statistics).
+    const VkPipelineStageFlags2 compute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+    const VkAccessFlags2 readWrite = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    tracker.buffer(indirect_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT).flush(cmd);
+    const uint32_t reset[4] = {0, 1, 1, 0};  // no tiles queued; y = z = 1
+    vkCmdUpdateBuffer(cmd, indirect_.handle(), 0, sizeof(reset), reset);
+
+    tracker.image(v.accum, gpu::use::ComputeReadWrite)
+        .image(v.flags, gpu::use::ComputeReadWrite)
+        .buffer(indirect_, compute, readWrite)
+        .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)
+        .buffer(v.list, gpu::use::BufferComputeReadWrite)
+        .flush(cmd);
+    gpu::bind(cmd, pipeline_);
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_VOXC_GRID, v.gridBuffer.handle())
+        .storageBuffer(sh::BIND_VOXC_DRAWS, scene.draws.handle())
+        .storageBuffer(sh::BIND_VOXC_MATERIALS, scene.materials.handle())
+        .storageImage(sh::BIND_VOXC_ACCUM, v.accum.view())
+        .storageImage(sh::BIND_VOXC_FLAGS, v.flags.view())
+        .storageBuffer(sh::BIND_VOXC_VERTICES, scene.vertices.handle())
+        .storageBuffer(sh::BIND_VOXC_INDICES, scene.indices.handle())
+        .storageBuffer(sh::BIND_VOXC_GROUPS, groups_.handle())
+        .storageBuffer(sh::BIND_VOXC_TILES, tiles_.handle())
+        .storageBuffer(sh::BIND_VOXC_INDIRECT, indirect_.handle())
+        .storageBuffer(sh::BIND_VOXC_LIST, v.list.handle())
+        .push(ctx_, cmd, pipeline_);
+    VkDescriptorSet textures = scene.textureTable->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.layout(), sh::SET_TEXTURES, 1, &textures,
+                            0, nullptr);
+    const uint32_t mode32 = dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC;
+    // Past maxComputeWorkGroupCount[0] (65535 at least) the groups wrap into y.
+    const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
+    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
+                       sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
+                                               glm::uvec4(row, 4, 2, 0)});
+    vkCmdDispatch(cmd, row, gpu::groupCount(count, row), 1);
+
+    // The tiles the triangle phase queued; its atomics and the tile phase's
+    // commute, but two dispatches writing the volumes still need the barrier.
+    tracker.image(v.accum, gpu::use::ComputeReadWrite)
+        .image(v.flags, gpu::use::ComputeReadWrite)
+        .buffer(indirect_, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT)
+        .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT)
+        .buffer(v.list, gpu::use::BufferComputeReadWrite)
+        .flush(cmd);
+    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
+                       sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TILES),
+                                               glm::uvec4(row, 4, 2, 0)});
+    vkCmdDispatchIndirect(cmd, indirect_.handle(), 0);
+}
+
+}  // namespace dvsgi::vxgi
