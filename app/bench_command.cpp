@@ -24,6 +24,7 @@
 #include "render_command.h"
 #include "scene/load.h"
 #include "settings_table.h"
+#include "vxgi/volumes.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::app {
@@ -183,6 +184,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
             {"n", v->grid.n},
             {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
             {"voxel_size", v->grid.voxelSize},
+            {"bytes_per_grid_voxel", vxgi::voxelBytesPerGridVoxel(v->grid.n)},
             {"voxelizer", renderer.voxelizer() ? vxgi::voxelizerName(renderer.voxelizer()->kind()) : "none"},
             {"conservative", renderer.voxelizer() && renderer.voxelizer()->hardwareConservative() ? "hardware"
                                                                                                   : "geometry-shader"}};
@@ -249,12 +251,8 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
         for (const std::string& name : m->passes.order)
             if (std::find(rows.begin(), rows.end(), name) == rows.end()) rows.push_back(name);
 
-    std::printf("\n%s\n\n| GPU ms: median (min-max) |", title.c_str());
-    for (const Measurement* m : cols)
-        std::printf(" %s %u^3%s%s |", m->scene.c_str(), m->voxels, m->variant.empty() ? "" : " ", m->variant.c_str());
-    std::printf("\n|---|");
-    for (size_t i = 0; i < cols.size(); ++i) std::printf("---|");
-    std::printf("\n");
+    std::printf("\n%s\n\n", title.c_str());
+    printColumnsHeader("GPU ms: median (min-max)", cols);
     auto row = [&](const std::string& label, auto&& value) {
         std::printf("| %s |", label.c_str());
         for (const Measurement* m : cols) {
@@ -313,6 +311,11 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.1f", double(m.memoryBytes) / 1048576.0);
         return std::string(buf);
+    });
+    row("voxel data, bytes per grid voxel (all volumes, mips and the list)", [](const Measurement& m) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.1f", vxgi::voxelBytesPerGridVoxel(m.voxels));
+        return m.voxels ? std::string(buf) : std::string("-");
     });
     for (const Measurement* m : cols)
         if (m->status == "failed") std::printf("\n%s %u^3 failed: %s\n", m->scene.c_str(), m->voxels, m->error.c_str());

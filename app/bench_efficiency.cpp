@@ -139,13 +139,9 @@ void printEfficiencyTable(const std::vector<Measurement>& ms, double copyGbps) {
             if (bench::findPass(m->traffic, name) && std::find(rows.begin(), rows.end(), name) == rows.end())
                 rows.push_back(name);
 
-    std::printf("\nGB/s of the bytes model at the median time (%% of the copy bandwidth, %s GB/s)\n\n| pass |",
+    std::printf("\nGB/s of the bytes model at the median time (%% of the copy bandwidth, %s GB/s)\n\n",
                 copyGbps > 0.0 ? figure(copyGbps).c_str() : "not measured");
-    for (const Measurement* m : cols)
-        std::printf(" %s %u^3%s%s |", m->scene.c_str(), m->voxels, m->variant.empty() ? "" : " ", m->variant.c_str());
-    std::printf("\n|---|");
-    for (size_t i = 0; i < cols.size(); ++i) std::printf("---|");
-    std::printf("\n");
+    printColumnsHeader("pass", cols);
     auto row = [&](const std::string& label, auto&& value) {
         std::printf("| %s |", label.c_str());
         for (const Measurement* m : cols) std::printf(" %s |", value(*m).c_str());

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -68,5 +69,16 @@ struct Measurement {
     // the next (mean and 99th percentile of the relative change, per frame).
     std::vector<double> flickerMean, flickerP99;
 };
+
+// A markdown table's header: the corner cell, then one column per measurement
+// ("scene N^3 variant"), and the separator line.
+inline void printColumnsHeader(const std::string& corner, const std::vector<const Measurement*>& cols) {
+    std::printf("| %s |", corner.c_str());
+    for (const Measurement* m : cols)
+        std::printf(" %s %u^3%s%s |", m->scene.c_str(), m->voxels, m->variant.empty() ? "" : " ", m->variant.c_str());
+    std::printf("\n|---|");
+    for (size_t i = 0; i < cols.size(); ++i) std::printf("---|");
+    std::printf("\n");
+}
 
 }  // namespace dvsgi::app

@@ -70,8 +70,13 @@ void printVoxelGrid(const vxgi::VoxelVolumes& v, const vxgi::Voxelizer& voxelize
                                                                        : "geometry-shader conservative rasterization";
     std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s\n", g.n, g.origin.x, g.origin.y,
                 g.origin.z, g.voxelSize, how);
-    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n))
+    uint64_t total = 0;
+    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n)) {
         std::printf("  %-36s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
+        total += m.bytes;
+    }
+    std::printf("  %-57s %9.1f MiB = %.1f bytes per grid voxel\n", "all voxel data", double(total) / 1048576.0,
+                vxgi::voxelBytesPerGridVoxel(g.n));
 }
 
 glm::dvec3 meanRgb(const image::ImageRGBA32F& img) {

@@ -8,6 +8,8 @@
 #   scripts/bench-side-by-side.sh [OUT_DIR] [BASE_REV]
 #   DVSGI_SBS_SCENES="cornell-box/cornell-lights.gltf crytek-sponza/sponza-sun.gltf"
 #   DVSGI_SBS_VOXELS=128 DVSGI_SBS_FRAMES=2 DVSGI_SBS_SIZE=640x360 DVSGI_SHARED=../shared
+#   DVSGI_SBS_OPTIONS="--bounces 1"   (render options for both; the default's first frame
+#                                      converges the bounces, minutes per scene on lavapipe)
 #
 # The base bench forced static voxelization inside every measured frame; the
 # current one times it in a submission of its own, so the table compares the
@@ -22,6 +24,7 @@ scenes=${DVSGI_SBS_SCENES:-"cornell-box/cornell-lights.gltf crytek-sponza/sponza
 voxels=${DVSGI_SBS_VOXELS:-128}
 frames=${DVSGI_SBS_FRAMES:-2}
 size=${DVSGI_SBS_SIZE:-640x360}
+read -r -a options <<< "${DVSGI_SBS_OPTIONS:---bounces 1}"
 mkdir -p "$out"
 
 base_dir=$(realpath -m "${DVSGI_SBS_BASE_DIR:-../dvsgi-base-$base_rev}")
@@ -35,7 +38,7 @@ w=${size%x*}; h=${size#*x}
 for scene in $scenes; do
   name=$(basename "$scene" .gltf)
   common=("$shared/scenes/$scene" --bench-voxels "$voxels" --bench-frames "$frames" --bench-warmup 1
-          --width "$w" --height "$h" --shared "$shared" --quiet)
+          --width "$w" --height "$h" --shared "$shared" --quiet "${options[@]}")
   echo "== $name ${voxels}^3: base $base_rev" >&2
   "$base_dir/build-rel/dvsgi" bench "${common[@]}" --bench-out "$out/$name-base.json" || true
   echo "== $name ${voxels}^3: current $current_rev" >&2

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "gpu/barriers.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "shared/bandwidth_copy_pass.h"
@@ -20,22 +21,9 @@ const uint32_t kCopy[] = {
 
 constexpr uint64_t kMiB = 1024ull * 1024ull;
 
-void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
-                   VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
-    VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    b.srcStageMask = srcStages;
-    b.srcAccessMask = srcAccess;
-    b.dstStageMask = dstStages;
-    b.dstAccessMask = dstAccess;
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &dep);
-}
-
 // Each copy rewrites the destination the previous one wrote (write after write).
 void copyAfterCopy(VkCommandBuffer cmd) {
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
 }
@@ -93,7 +81,7 @@ CopyBandwidth measureCopyBandwidth(const gpu::Context& ctx, uint64_t bytes, uint
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         // Defined contents; the fill also touches every page before timing.
         vkCmdFillBuffer(cmd, src.handle(), 0, bytes, 0x3c3c3c3cu);
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
         pass.record(cmd, src, dst, bytes, nullptr, "");
     });

@@ -16,6 +16,9 @@ void recordImageBarrier(VkCommandBuffer cmd, const Image& image, VkImageSubresou
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+
+}  // namespace
+
 void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
                    VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess) {
     VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
@@ -28,8 +31,6 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAcces
     dep.pMemoryBarriers = &b;
     vkCmdPipelineBarrier2(cmd, &dep);
 }
-
-}  // namespace
 
 VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
     VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};

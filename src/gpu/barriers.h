@@ -89,6 +89,10 @@ void transition(VkCommandBuffer cmd, const Image& image, ImageUse from, ImageUse
 // One mip level (all layers): for building mip chains level by level.
 void transitionMip(VkCommandBuffer cmd, const Image& image, uint32_t mip, ImageUse from, ImageUse to);
 
+// A global memory dependency (every resource) from the src stages' accesses
+// to the dst stages' accesses: for submissions outside the tracker.
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAccessFlags2 srcAccess,
+                   VkPipelineStageFlags2 dstStages, VkAccessFlags2 dstAccess);
 // Makes compute-shader writes to buffers/images visible to the stages given.
 void computeWritesVisibleTo(VkCommandBuffer cmd, VkPipelineStageFlags2 stages, VkAccessFlags2 access);
 // Makes storage writes of `srcStages` (images kept in GENERAL layout, such as

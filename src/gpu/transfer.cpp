@@ -1,8 +1,10 @@
 #include "gpu/transfer.h"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
+#include "gpu/barriers.h"
 #include "gpu/context.h"
 
 namespace dvsgi::gpu {
@@ -83,23 +85,20 @@ std::vector<uint8_t> readbackImage(const Context& ctx, const Image& image, Image
     return out;
 }
 
-std::vector<uint8_t> readbackBuffer(const Context& ctx, const Buffer& buffer) {
-    Buffer staging(ctx, buffer.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "readback");
+std::vector<uint8_t> readbackBuffer(const Context& ctx, const Buffer& buffer, VkDeviceSize bytes) {
+    // The first `bytes` (all of it by default): a small header needs no copy of the rest.
+    const VkDeviceSize size = bytes == VK_WHOLE_SIZE ? buffer.size() : std::min(bytes, buffer.size());
+    Buffer staging(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "readback");
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-        b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-        b.srcAccessMask = VK_ACCESS_2_MEMORY_WRITE_BIT;
-        b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT;
-        b.dstAccessMask = VK_ACCESS_2_TRANSFER_READ_BIT;
-        VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-        dep.memoryBarrierCount = 1;
-        dep.pMemoryBarriers = &b;
-        vkCmdPipelineBarrier2(cmd, &dep);
-        VkBufferCopy region{0, 0, buffer.size()};
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+        const VkBufferCopy region{0, 0, size};
         vkCmdCopyBuffer(cmd, buffer.handle(), staging.handle(), 1, &region);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     });
-    std::vector<uint8_t> out(buffer.size());
-    std::memcpy(out.data(), staging.mapped(), buffer.size());
+    std::vector<uint8_t> out(size);
+    std::memcpy(out.data(), staging.mapped(), size);
     return out;
 }
 

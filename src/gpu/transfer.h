@@ -27,7 +27,7 @@ void uploadImage(const Context& ctx, const Image& image, const void* texels, VkD
 // (tightly packed), and returns it to `current`.
 std::vector<uint8_t> readbackImage(const Context& ctx, const Image& image, ImageUse current, uint32_t mip = 0);
 
-std::vector<uint8_t> readbackBuffer(const Context& ctx, const Buffer& buffer);
+std::vector<uint8_t> readbackBuffer(const Context& ctx, const Buffer& buffer, VkDeviceSize bytes = VK_WHOLE_SIZE);
 
 uint32_t formatBytes(VkFormat format);
 

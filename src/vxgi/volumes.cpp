@@ -60,6 +60,12 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n) {
     };
 }
 
+double voxelBytesPerGridVoxel(uint32_t n) {
+    uint64_t total = 0;
+    for (const VolumeMemory& m : volumeMemory(n)) total += m.bytes;
+    return double(total) / (double(n) * n * n);
+}
+
 VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g), directionalMips(directionalMipCount(g.n)) {
     const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
     if (g.n < 8 || (g.n & (g.n - 1)) != 0)

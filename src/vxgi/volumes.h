@@ -35,6 +35,8 @@ struct VolumeMemory {
 };
 // What the volumes of an N^3 grid take, before allocating anything.
 std::vector<VolumeMemory> volumeMemory(uint32_t n);
+// Their sum over N^3: the figure issue #14's compact-storage goal is stated in.
+double voxelBytesPerGridVoxel(uint32_t n);
 
 class VoxelVolumes {
 public:
