@@ -97,10 +97,11 @@ bool loadTriangle(uint draw, uint firstIndex, int vertexOffset, out Triangle t) 
     vec3 faceNormal = cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
     vec3 an = abs(faceNormal);
     t.axis = (an.x >= an.y && an.x >= an.z) ? 0u : (an.y >= an.z ? 1u : 2u);
-    // Closed boxes: a coordinate on a voxel face touches the voxels on both sides.
+    // Closed, grown boxes: a coordinate on a voxel face touches the voxels on both sides.
     vec3 lo = min(t.p[0], min(t.p[1], t.p[2])), hi = max(t.p[0], max(t.p[1], t.p[2]));
     int N = int(grid.dims.x);
-    ivec3 a = max(ivec3(ceil(lo)) - 1, ivec3(0)), b = min(ivec3(floor(hi)), ivec3(N - 1));
+    ivec3 a = max(ivec3(ceil(lo - VOXC_BOX_GROWTH)) - 1, ivec3(0));
+    ivec3 b = min(ivec3(floor(hi + VOXC_BOX_GROWTH)), ivec3(N - 1));
     if (any(greaterThan(a, b))) return false;
     t.lo = project(a, t.axis);
     t.hi = project(b, t.axis);

@@ -102,6 +102,8 @@ struct ExternalDevice {
     bool shaderImageFloat32AtomicAdd = false;  // enabled as above (required for voxels > 0)
     bool conservativeRasterization = false;    // VK_EXT_conservative_rasterization enabled
     bool samplerAnisotropy = false;            // feature enabled: textures sampled anisotropically
+    bool shaderFloat64 = false;                // feature enabled: the compute voxelizer may run (its exact
+                                               // test is double precision); without it voxelization rasterizes
     // The instance has VK_EXT_debug_utils enabled (and, typically, the
     // validation layer): dvsgi adds its own messenger and counts messages.
     bool debugUtils = false;

@@ -10,19 +10,20 @@ dvec3 crossExact(dvec3 x, dvec3 y) {  // glm::cross's operation order
     return r;
 }
 
-// Triangle vertices relative to the box centre; the box is [-0.5, 0.5]^3.
+// Triangle vertices relative to the box centre; the box is [-h, h]^3.
 bool separatedOn(dvec3 axis, dvec3 v0, dvec3 v1, dvec3 v2) {
     precise double p0 = (axis.x * v0.x + axis.y * v0.y) + axis.z * v0.z;
     precise double p1 = (axis.x * v1.x + axis.y * v1.y) + axis.z * v1.z;
     precise double p2 = (axis.x * v2.x + axis.y * v2.y) + axis.z * v2.z;
-    precise double r = (0.5LF * abs(axis.x) + 0.5LF * abs(axis.y)) + 0.5LF * abs(axis.z);
+    const double h = 0.5LF + double(VOXC_BOX_GROWTH);  // the grown half-size
+    precise double r = (h * abs(axis.x) + h * abs(axis.y)) + h * abs(axis.z);
     return min(p0, min(p1, p2)) > r || max(p0, max(p1, p2)) < -r;
 }
 
 // v: the triangle in voxel units; e: its edges v1 - v0, v2 - v1, v0 - v2;
 // n: crossExact(e0, e1). The three box axes are not tested: callers ask only
-// about voxels inside the triangle's closed bounding box, which they cannot
-// separate.
+// about voxels whose grown box meets the triangle's bounding box, which they
+// cannot separate.
 bool triangleTouchesVoxel(dvec3 v[3], dvec3 e[3], dvec3 n, ivec3 voxel) {
     dvec3 c = dvec3(voxel) + 0.5LF;
     dvec3 v0 = v[0] - c, v1 = v[1] - c, v2 = v[2] - c;  // exact: float coordinates, half-integer centre

@@ -63,6 +63,12 @@ DVSGI_CONST(uint, BIND_VOXC_INDIRECT, 9);  // uint[4]: the tile phase's dispatch
 // scene::Vertex as floats: position 0-2, normal 3-5, uv 6-7, tangent 8-11.
 DVSGI_CONST(uint, VOXC_VERTEX_FLOATS, 12);
 
+// Voxel boxes are grown by this much (voxel units) on every side before the
+// exact test, so a triangle that lies on a voxel face up to the float rounding
+// of its transform marks the voxels on both sides, as the raster path's closed
+// intervals do (a wall then stays two layers thick wherever rounding puts it).
+DVSGI_CONST(float, VOXC_BOX_GROWTH, 1e-4);
+
 DVSGI_END
 
 #endif

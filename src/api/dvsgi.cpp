@@ -280,6 +280,7 @@ Renderer::Renderer(const Scene& scene, const Settings& settings, const ExternalD
         ext.shaderImageFloat32AtomicAdd = device.shaderImageFloat32AtomicAdd;
         ext.conservativeRasterization = device.conservativeRasterization;
         ext.samplerAnisotropy = device.samplerAnisotropy;
+        ext.shaderFloat64 = device.shaderFloat64;
         ext.debugUtils = device.debugUtils;
         impl_->ctx = std::make_unique<gpu::Context>(ext, gpu::ContextOptions{});
         impl_->build(settings);

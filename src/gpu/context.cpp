@@ -351,6 +351,7 @@ Context::Context(const ExternalDevice& external, const ContextOptions& options) 
     features.atomicFloat = external.shaderImageFloat32AtomicAdd;
     features.conservativeRaster = external.conservativeRasterization;
     features.samplerAnisotropy = external.samplerAnisotropy;
+    features.float64 = external.shaderFloat64;
     if (external.debugUtils) createMessenger();
     finishSetup(options);
 }

@@ -38,6 +38,7 @@ struct ExternalDevice {
     bool shaderImageFloat32AtomicAdd = false;  // VK_EXT_shader_atomic_float (voxels need it)
     bool conservativeRasterization = false;    // VK_EXT_conservative_rasterization
     bool samplerAnisotropy = false;            // textures are sampled anisotropically only then
+    bool shaderFloat64 = false;                // the compute voxelizer may run
     // The instance has VK_EXT_debug_utils enabled: the Context then installs its
     // own messenger and counts validation messages as it does for its own instance.
     bool debugUtils = false;
@@ -48,7 +49,7 @@ struct DeviceFeatures {
     bool atomicFloat = false;         // shaderImageFloat32AtomicAdd
     bool samplerAnisotropy = false;   // enabled on the device; samplers use anisotropy only then
     bool memoryBudget = false;        // VK_EXT_memory_budget enabled (deviceMemoryUsage() works)
-    bool float64 = false;             // shaderFloat64: the compute voxelizer's exact test (not on external devices)
+    bool float64 = false;             // shaderFloat64: the compute voxelizer's exact test
 };
 
 class Context {

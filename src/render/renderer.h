@@ -45,7 +45,7 @@ struct RenderSettings {
     bool hasVoxelBox = false;         // grid on a user box instead of the scene bounds
     glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
     bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
-    vxgi::VoxelizerKind voxelizer = vxgi::VoxelizerKind::Geometry;  // Auto: resolved by vxgi::resolveVoxelizer
+    vxgi::VoxelizerKind voxelizer = vxgi::VoxelizerKind::Auto;  // resolved by vxgi::resolveVoxelizer
     ViewSettings view;
     vxgi::VoxelLightSettings voxelLight;
     // Per-light occlusion mode for the voxel light pass, by light name

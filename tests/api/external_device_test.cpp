@@ -107,7 +107,11 @@ protected:
                 family = i;
         ASSERT_NE(family, UINT32_MAX);
 
-        // Exactly the features dvsgi.h lists for an ExternalDevice.
+        // Exactly the features dvsgi.h lists for an ExternalDevice, and
+        // shaderFloat64 where supported, as dvsgi's own device: the same voxelizer on both.
+        VkPhysicalDeviceFeatures supported;
+        vkGetPhysicalDeviceFeatures(physical, &supported);
+        float64 = supported.shaderFloat64;
         VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomic{
             VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
         atomic.shaderImageFloat32Atomics = atomic.shaderImageFloat32AtomicAdd = VK_TRUE;
@@ -120,6 +124,7 @@ protected:
         VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
         f2.features.geometryShader = f2.features.fragmentStoresAndAtomics = VK_TRUE;
         f2.features.vertexPipelineStoresAndAtomics = VK_TRUE;
+        f2.features.shaderFloat64 = float64;
         const char* exts[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
         const float priority = 1.0f;
         VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -164,6 +169,7 @@ protected:
         e.queueFamily = family;
         e.queue = queue;
         e.shaderImageFloat32AtomicAdd = true;
+        e.shaderFloat64 = float64 == VK_TRUE;
         e.debugUtils = true;
         return e;
     }
@@ -260,6 +266,7 @@ protected:
     VkPhysicalDevice physical = VK_NULL_HANDLE;
     VkDevice device = VK_NULL_HANDLE;
     uint32_t family = 0;
+    VkBool32 float64 = VK_FALSE;  // shaderFloat64 enabled (when supported)
     VkQueue queue = VK_NULL_HANDLE;
     VkCommandPool pool = VK_NULL_HANDLE;
     std::vector<std::pair<VkImage, VkDeviceMemory>> images;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.h"
+#include "shared/voxelize_compute_pass.h"
 
 namespace dvsgi::test {
 
@@ -73,7 +74,10 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
         const VoxelSet gpu = readVoxels(volumes).occupancy();
         const std::vector<Triangle> tris = voxelTriangles(s, grid);
         triangles = tris.size();
-        const VoxelSet ref = referenceVoxelize(tris, grid.n);
+        // The compute path's boxes are grown (shared/voxelize_compute_pass.h);
+        // its reference is grown alike and must match exactly.
+        const double growth = kind == vxgi::VoxelizerKind::Compute ? double(shader::VOXC_BOX_GROWTH) : 0.0;
+        const VoxelSet ref = referenceVoxelize(tris, grid.n, growth);
         const CoverageReport r = compareCoverage(ref, gpu);
         for (const glm::ivec3& v : r.missList) {
             std::string culprits;

@@ -19,7 +19,10 @@ bool separated(const glm::dvec3& axis, const glm::dvec3 (&v)[3], const glm::dvec
 
 bool triangleBoxOverlap(const Triangle& t, const glm::dvec3& boxMin, const glm::dvec3& boxMax) {
     // Centre the box so each axis test compares against a symmetric interval.
-    const glm::dvec3 c = (boxMin + boxMax) * 0.5, half = (boxMax - boxMin) * 0.5;
+    return triangleBoxOverlapCentred(t, (boxMin + boxMax) * 0.5, (boxMax - boxMin) * 0.5);
+}
+
+bool triangleBoxOverlapCentred(const Triangle& t, const glm::dvec3& c, const glm::dvec3& half) {
     const glm::dvec3 v[3] = {t.v[0] - c, t.v[1] - c, t.v[2] - c};
     const glm::dvec3 e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
     const glm::dvec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -39,28 +42,31 @@ size_t VoxelSet::count() const {
     return size_t(std::count_if(bits.begin(), bits.end(), [](uint8_t b) { return b != 0; }));
 }
 
-void referenceVoxelize(const Triangle& t, VoxelSet& out) {
+void referenceVoxelize(const Triangle& t, VoxelSet& out, double growth) {
     glm::dvec3 lo = glm::min(t.v[0], glm::min(t.v[1], t.v[2]));
     glm::dvec3 hi = glm::max(t.v[0], glm::max(t.v[1], t.v[2]));
     // Closed boxes: a coordinate on a voxel boundary also touches the voxel below.
     const int n = int(out.n);
     glm::ivec3 a, b;
     for (int i = 0; i < 3; ++i) {
-        a[i] = std::max(int(std::ceil(lo[i])) - 1, 0);
-        b[i] = std::min(int(std::floor(hi[i])), n - 1);
+        a[i] = std::max(int(std::ceil(lo[i] - growth)) - 1, 0);
+        b[i] = std::min(int(std::floor(hi[i] + growth)), n - 1);
     }
+    // The centre is exact (integer + 0.5) and the half-size the one the
+    // compute voxelizer uses, so both decide every case alike.
+    const glm::dvec3 half(0.5 + growth);
     for (int z = a.z; z <= b.z; ++z)
         for (int y = a.y; y <= b.y; ++y)
             for (int x = a.x; x <= b.x; ++x) {
                 if (out.get(x, y, z)) continue;
-                const glm::dvec3 mn(x, y, z);
-                if (triangleBoxOverlap(t, mn, mn + 1.0)) out.set(x, y, z);
+                const glm::dvec3 centre = glm::dvec3(x, y, z) + 0.5;
+                if (triangleBoxOverlapCentred(t, centre, half)) out.set(x, y, z);
             }
 }
 
-VoxelSet referenceVoxelize(const std::vector<Triangle>& tris, uint32_t n) {
+VoxelSet referenceVoxelize(const std::vector<Triangle>& tris, uint32_t n, double growth) {
     VoxelSet s(n);
-    for (const Triangle& t : tris) referenceVoxelize(t, s);
+    for (const Triangle& t : tris) referenceVoxelize(t, s, growth);
     return s;
 }
 

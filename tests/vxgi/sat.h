@@ -32,10 +32,14 @@ struct VoxelSet {
     size_t count() const;
 };
 
-// Adds every voxel of the grid whose closed unit box overlaps the triangle
-// (coordinates in voxel units); voxels outside the grid are ignored.
-void referenceVoxelize(const Triangle& t, VoxelSet& out);
-VoxelSet referenceVoxelize(const std::vector<Triangle>& tris, uint32_t n);
+// Adds every voxel of the grid whose closed unit box, grown by `growth` on
+// every side, overlaps the triangle (coordinates in voxel units); voxels
+// outside the grid are ignored. The compute voxelizer's boxes are grown by
+// shader::VOXC_BOX_GROWTH (kComputeBoxGrowth).
+void referenceVoxelize(const Triangle& t, VoxelSet& out, double growth = 0.0);
+VoxelSet referenceVoxelize(const std::vector<Triangle>& tris, uint32_t n, double growth = 0.0);
+// The same test for a box given by its centre and half-size.
+bool triangleBoxOverlapCentred(const Triangle& t, const glm::dvec3& centre, const glm::dvec3& half);
 
 struct CoverageReport {
     size_t reference = 0;  // voxels the reference marks
