@@ -360,8 +360,11 @@ int runBench(const RenderOptions& options) {
         }
     }
     // The moving dynamic object: --add-model, else the Stanford bunny.
-    std::string dynamicModel = o.addModel.empty() ? (scenes / "stanford-bunny/bun_zipper.ply").string() : o.addModel;
-    if (!fs::exists(dynamicModel)) {
+    // "none": static scenes only (what the flicker figure of a camera path wants).
+    std::string dynamicModel = o.addModel.empty() ? (scenes / "stanford-bunny/bun_zipper.ply").string()
+                               : o.addModel == "none" ? std::string()
+                                                      : o.addModel;
+    if (!dynamicModel.empty() && !fs::exists(dynamicModel)) {
         std::fprintf(stderr, "warning: dynamic object %s not found; benchmarking without one\n", dynamicModel.c_str());
         dynamicModel.clear();
     }

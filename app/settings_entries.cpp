@@ -468,7 +468,7 @@ std::vector<Setting> conesAndCommands() {
         dynamicNodes(),
         unset(with(text({"add-model", kAnimation, "FILE", "",
                    "add FILE (any supported format) as a dynamic object moving on a circle through the scene, one "
-                   "turn per 120 frames"},
+                   "turn per 120 frames (bench: the Stanford bunny unless given; none = no moving object)"},
                   FIELD(addModel)),
              "bunny.ply"), "none"),
         unset(with(text({"camera-path", kAnimation, "FILE.json", "",
