@@ -114,8 +114,12 @@ with open(walk, "w") as f:
         {"time": 0.0, "position": [0.0016, 0.2744, -0.763], "target": [0.0, 0.2744, 0.0]},
         {"time": 0.5, "position": [0.05, 0.30, -0.70], "target": [0.02, 0.25, 0.0]}]}, f)
 out3 = os.path.join(TMP, "walk-bench.json")
-rc, stdout, stderr = run(["--bench-quick", "--bench-out", out3, "--shared", SHARED, "--camera-path", walk])
-m3 = (load(out3).get("measurements") or [{}])[0]
+rc, stdout, stderr = run(["--bench-quick", "--bench-out", out3, "--shared", SHARED, "--camera-path", walk,
+                          "--add-model", "none"])
+j3 = load(out3)
+m3 = (j3.get("measurements") or [{}])[0]
+check("--add-model none: no moving model", j3.get("dynamic_model", "x") is None
+      and m3.get("triangles", {}).get("dynamic", -1) == 0, json.dumps(m3.get("triangles")))
 frames = m3.get("per_frame", [])
 flick = [f.get("flicker", {}) for f in frames]
 check("camera path: exit 0, every measured frame reported", rc == 0 and len(frames) == 2
