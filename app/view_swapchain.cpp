@@ -22,23 +22,8 @@ namespace sh = dvsgi::shader;
 
 namespace {
 
-// A raw barrier for a swapchain image (not a gpu::Image).
-void swapImageBarrier(VkCommandBuffer cmd, VkImage image, const gpu::ImageUse& from, const gpu::ImageUse& to) {
-    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = from.stages;
-    b.srcAccessMask = from.access;
-    b.dstStageMask = to.stages;
-    b.dstAccessMask = to.access;
-    b.oldLayout = from.layout;
-    b.newLayout = to.layout;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = 1;
-    dep.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &dep);
-}
+// Swapchain images: one colour mip and layer.
+constexpr VkImageSubresourceRange kColour{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
 
 bool canBlit(VkPhysicalDevice pd, VkFormat f, VkFormatFeatureFlags need) {
     VkFormatProperties p;
@@ -273,7 +258,7 @@ bool Swapchain::present(const gpu::Image& output, float exposureEV, const Overla
         gpu::pushConstants(cmd, toneMap_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(src.width, shader::PRESENT_GROUP), gpu::groupCount(src.height, shader::PRESENT_GROUP), 1);
         gpu::transition(cmd, display_, gpu::use::ComputeWrite, gpu::use::TransferSrc);
-        swapImageBarrier(cmd, target, gpu::use::Undefined, gpu::use::TransferDst);
+        gpu::transition(cmd, target, kColour, gpu::use::Undefined, gpu::use::TransferDst);
         VkImageBlit blit{};
         blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         blit.srcOffsets[1] = {int32_t(src.width), int32_t(src.height), 1};
@@ -281,7 +266,7 @@ bool Swapchain::present(const gpu::Image& output, float exposureEV, const Overla
         blit.dstOffsets[1] = {int32_t(extent_.width), int32_t(extent_.height), 1};
         vkCmdBlitImage(cmd, display_.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
-        swapImageBarrier(cmd, target, gpu::use::TransferDst, gpu::use::ColorAttachment);
+        gpu::transition(cmd, target, kColour, gpu::use::TransferDst, gpu::use::ColorAttachment);
         // The render pass leaves the image in PRESENT_SRC, with or without an overlay.
         VkRenderPassBeginInfo rb{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         rb.renderPass = renderPass_;

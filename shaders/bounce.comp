@@ -19,10 +19,7 @@ layout(set = 0, binding = BIND_BOUNCE_ACCUM, r32f) uniform readonly image3D accu
 layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D direct;
 layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
 layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { float stats[]; };
-layout(set = 0, binding = BIND_BOUNCE_LIST, std430) readonly buffer List {
-    VoxelListHeader header;
-    uint entries[];
-} list;
+VOXEL_LIST_BLOCK(BIND_BOUNCE_LIST, readonly);
 layout(push_constant) uniform Push { BouncePush pc; };
 
 #include "lib/math.glsl"

@@ -11,10 +11,7 @@ layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_CLEAR_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CLEAR_ACCUM, r32f) uniform writeonly image3D accum;
-layout(set = 0, binding = BIND_CLEAR_LIST, std430) readonly buffer List {
-    VoxelListHeader header;
-    uint entries[];
-} list;
+VOXEL_LIST_BLOCK(BIND_CLEAR_LIST, readonly);
 layout(set = 0, binding = BIND_CLEAR_DIRECT, rgba16f) uniform writeonly image3D direct;
 layout(set = 0, binding = BIND_CLEAR_RADIANCE, rgba16f) uniform writeonly image3D radiance;
 

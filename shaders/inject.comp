@@ -19,10 +19,7 @@ layout(set = 0, binding = BIND_INJECT_LIGHTS, std430) readonly buffer Lights { G
 layout(set = 0, binding = BIND_INJECT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
 layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
 layout(set = 0, binding = BIND_INJECT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
-layout(set = 0, binding = BIND_INJECT_LIST, std430) readonly buffer List {
-    VoxelListHeader header;
-    uint entries[];
-} list;
+VOXEL_LIST_BLOCK(BIND_INJECT_LIST, readonly);
 layout(push_constant) uniform Push { VoxelLightPush pc; };
 
 #include "lib/math.glsl"

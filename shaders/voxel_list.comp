@@ -8,10 +8,7 @@
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_LIST_GRID) uniform Grid { VoxelGrid grid; };
-layout(set = 0, binding = BIND_LIST_BUFFER, std430) coherent buffer List {
-    VoxelListHeader header;
-    uint entries[];
-} list;
+VOXEL_LIST_BLOCK(BIND_LIST_BUFFER, coherent);
 layout(set = 0, binding = BIND_LIST_ACCUM, r32f) uniform readonly image3D accum;
 layout(push_constant) uniform Push { VoxelListPush pc; };
 

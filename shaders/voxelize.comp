@@ -37,10 +37,7 @@ layout(set = 0, binding = BIND_VOXC_INDICES, std430) readonly buffer Indices { u
 layout(set = 0, binding = BIND_VOXC_GROUPS, std430) readonly buffer Groups { VoxcGroup groups[]; };
 layout(set = 0, binding = BIND_VOXC_TILES, std430) buffer Tiles { VoxcTile tiles[]; };
 layout(set = 0, binding = BIND_VOXC_INDIRECT, std430) buffer Indirect { uint indirect[4]; };
-layout(set = 0, binding = BIND_VOXC_LIST, std430) buffer List {
-    VoxelListHeader header;
-    uint entries[];
-} list;
+VOXEL_LIST_BLOCK(BIND_VOXC_LIST, );
 layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
 layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
 layout(push_constant) uniform Push { VoxelizeComputePush pc; };

@@ -11,10 +11,7 @@ layout(set = 0, binding = BIND_VOX_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_VOX_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = 0, binding = BIND_VOX_ACCUM, r32f) uniform coherent image3D accum;
 layout(set = 0, binding = BIND_VOX_FLAGS, r8ui) uniform coherent uimage3D flags;
-layout(set = 0, binding = BIND_VOX_LIST, std430) buffer List {
-    VoxelListHeader header;
-    uint entries[];
-} list;
+VOXEL_LIST_BLOCK(BIND_VOX_LIST, );
 layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
 layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
 layout(push_constant) uniform Push { VoxelizePush pc; };

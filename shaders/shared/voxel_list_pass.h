@@ -43,4 +43,12 @@ DVSGI_CONST(uint, BIND_LIST_ACCUM, 2);  // read by LIST_SCAN
 
 DVSGI_END
 
+#ifndef __cplusplus
+// The list as the GLSL buffer block `list` at binding B of set 0; Q is its
+// access qualifier (readonly, coherent, or nothing). One declaration for
+// every pass that reads or appends.
+#define VOXEL_LIST_BLOCK(B, Q) \
+    layout(set = 0, binding = B, std430) Q buffer List { VoxelListHeader header; uint entries[]; } list
+#endif
+
 #endif

@@ -8,12 +8,7 @@ namespace {
 
 void recordImageBarrier(VkCommandBuffer cmd, const Image& image, VkImageSubresourceRange range, ImageUse from,
                         ImageUse to) {
-    if (!from.stages) from.stages = VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
-    const VkImageMemoryBarrier2 b = imageBarrier(image, range, from, to);
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = 1;
-    dep.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    transition(cmd, image.handle(), range, from, to);
 }
 
 
@@ -33,6 +28,19 @@ void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags2 srcStages, VkAcces
 }
 
 VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
+    return imageBarrier(image.handle(), range, from, to);
+}
+
+void transition(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
+    if (!from.stages) from.stages = VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
+    const VkImageMemoryBarrier2 b = imageBarrier(image, range, from, to);
+    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+    dep.imageMemoryBarrierCount = 1;
+    dep.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+VkImageMemoryBarrier2 imageBarrier(VkImage image, VkImageSubresourceRange range, ImageUse from, ImageUse to) {
     VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
     b.srcStageMask = from.stages;
     b.srcAccessMask = from.access;
@@ -41,7 +49,7 @@ VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange r
     b.oldLayout = from.layout;
     b.newLayout = to.layout;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image.handle();
+    b.image = image;
     b.subresourceRange = range;
     return b;
 }

@@ -84,6 +84,9 @@ inline constexpr BufferUse HostRead{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HO
 // The barrier from one use to another over `range`, not recorded (the tracker
 // batches these).
 VkImageMemoryBarrier2 imageBarrier(const Image& image, VkImageSubresourceRange range, ImageUse from, ImageUse to);
+// The same for an image dvsgi does not own (a swapchain image), and recorded at once.
+VkImageMemoryBarrier2 imageBarrier(VkImage image, VkImageSubresourceRange range, ImageUse from, ImageUse to);
+void transition(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range, ImageUse from, ImageUse to);
 // Whole image (all mips and layers) from one use to another.
 void transition(VkCommandBuffer cmd, const Image& image, ImageUse from, ImageUse to);
 // One mip level (all layers): for building mip chains level by level.
