@@ -184,7 +184,8 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
             {"n", v->grid.n},
             {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
             {"voxel_size", v->grid.voxelSize},
-            {"bytes_per_grid_voxel", vxgi::voxelBytesPerGridVoxel(v->grid.n)},
+            {"bytes_per_grid_voxel", v->bytesPerGridVoxel()},
+            {"voxel_slots", v->slots},
             {"voxelizer", renderer.voxelizer() ? vxgi::voxelizerName(renderer.voxelizer()->kind()) : "none"},
             {"conservative", renderer.voxelizer() && renderer.voxelizer()->hardwareConservative() ? "hardware"
                                                                                                   : "geometry-shader"}};
@@ -314,8 +315,9 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
     });
     row("voxel data, bytes per grid voxel (all volumes, mips and the list)", [](const Measurement& m) {
         char buf[32];
-        std::snprintf(buf, sizeof buf, "%.1f", vxgi::voxelBytesPerGridVoxel(m.voxels));
-        return m.voxels ? std::string(buf) : std::string("-");
+        if (!m.detail.contains("voxel_grid")) return std::string("-");
+        std::snprintf(buf, sizeof buf, "%.1f", m.detail["voxel_grid"]["bytes_per_grid_voxel"].get<double>());
+        return std::string(buf);
     });
     for (const Measurement* m : cols)
         if (m->status == "failed") std::printf("\n%s %u^3 failed: %s\n", m->scene.c_str(), m->voxels, m->error.c_str());

@@ -77,6 +77,7 @@ void modelTraffic(const gpu::Context& ctx, const render::Renderer& renderer, con
         m.detail["voxel_count_ms"] =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         in.voxels = volumes->grid.n;
+        in.slots = volumes->slots;
         in.occupiedVoxels = m.occupiedVoxels = counts.occupied;
         in.dynamicVoxels = m.dynamicVoxels = counts.dynamic;
         m.counted = true;
@@ -119,6 +120,7 @@ void addTrafficJson(const Measurement& m, double copyGbps, nlohmann::json& json)
                            {"shadow_views", in.shadowViews},
                            {"static_geometry_bytes", in.staticGeometryBytes},
                            {"dynamic_geometry_bytes", in.dynamicGeometryBytes},
+                           {"slots", in.slots},
                            {"bounces", in.bounces}};
     // The whole frame: the modelled bytes of its passes over its time.
     const uint64_t bytes = frameBytes(m);

@@ -24,7 +24,8 @@ Culprit culprit(std::string_view resource, const RenderOptions& o) {
     if (has(resource, "voxel") || has(resource, "directional volume") || has(resource, "bounce stat")) {
         c.setting = "--voxels " + std::to_string(o.settings.voxels);
         uint64_t total = 0;
-        for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(o.settings.voxels)) total += m.bytes;
+        const uint32_t n = o.settings.voxels;
+        for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(n, vxgi::defaultSlotCapacity(n))) total += m.bytes;
         c.total = "; the voxel volumes need " + formatBytes(double(total)) + " in all";
         c.advice = "fewer --voxels";
     } else if (has(resource, "shadow map")) {

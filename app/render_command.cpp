@@ -68,15 +68,15 @@ void printVoxelGrid(const vxgi::VoxelVolumes& v, const vxgi::Voxelizer& voxelize
     const char* how = voxelizer.kind() == vxgi::VoxelizerKind::Compute ? "compute voxelizer (exact)"
                       : voxelizer.hardwareConservative()               ? "hardware conservative rasterization"
                                                                        : "geometry-shader conservative rasterization";
-    std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s\n", g.n, g.origin.x, g.origin.y,
-                g.origin.z, g.voxelSize, how);
+    std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s, %u voxel slots\n", g.n,
+                g.origin.x, g.origin.y, g.origin.z, g.voxelSize, how, v.slots);
     uint64_t total = 0;
-    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n)) {
-        std::printf("  %-36s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
+    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n, v.slots)) {
+        std::printf("  %-40s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
         total += m.bytes;
     }
-    std::printf("  %-57s %9.1f MiB = %.1f bytes per grid voxel\n", "all voxel data", double(total) / 1048576.0,
-                vxgi::voxelBytesPerGridVoxel(g.n));
+    std::printf("  %-61s %9.1f MiB = %.1f bytes per grid voxel\n", "all voxel data", double(total) / 1048576.0,
+                v.bytesPerGridVoxel());
 }
 
 glm::dvec3 meanRgb(const image::ImageRGBA32F& img) {
@@ -106,7 +106,9 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
     if (const vxgi::VoxelVolumes* v = renderer.volumes()) {
         j["voxels"] = {{"n", v->grid.n},
                        {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
-                       {"voxel_size", v->grid.voxelSize}};
+                       {"voxel_size", v->grid.voxelSize},
+                       {"slots", v->slots},
+                       {"bytes_per_grid_voxel", v->bytesPerGridVoxel()}};
     }
     j["settings"] = settingsJson(o, kRender);
     j["validation_errors"] = ctx.validationErrors();
@@ -221,6 +223,7 @@ int runRender(const RenderOptions& o) {
     const bool moving = o.frames > 1 || !scene.animations.empty() || path;
     if (path) renderer.setCameraPath(std::move(path));
     if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), *renderer.voxelizer());
+    const uint32_t slots = renderer.volumes() ? renderer.volumes()->slots : 0;
 
     const bool eachFrame = o.outExr.find('#') != std::string::npos;
     render::FrameStats stats, first;
@@ -251,6 +254,9 @@ int runRender(const RenderOptions& o) {
         lastPng = pngPathFor(lastExr, o);
         if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
     }
+    if (!o.quiet && renderer.volumes() && renderer.volumes()->slots != slots)
+        std::printf("voxel slots grew from %u to %u (more occupied voxels): %.1f bytes per grid voxel\n", slots,
+                    renderer.volumes()->slots, renderer.volumes()->bytesPerGridVoxel());
     if (!o.metricsPath.empty()) {
         nlohmann::json j = metricsJson(o, ctx, renderer, stats, first, scene);
         // Mean radiance of the last image written, so scripts can compare runs

@@ -10,7 +10,7 @@
 // voxel's direct light + emission. Repeating it (re-filtering between) gives
 // L_direct + T L_direct + ... ; reading the previous frame's volumes instead
 // (feedback) adds one bounce per frame at the cost of one.
-// One invocation per occupied voxel (an entry of the list).
+// One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
@@ -31,12 +31,12 @@ layout(push_constant) uniform Push { BouncePush pc; };
 const uint GROUP_SIZE = VOXEL_LIST_GROUP;
 shared vec2 partial[GROUP_SIZE];
 
-vec4 bounced(ivec3 v) {
-    vec4 d = imageLoad(direct, v);
-    vec3 n = voxelNormal(v);
+vec4 bounced(ivec3 v, uint slot) {
+    vec4 d = imageLoad(direct, slotTexel(slot, 0u));
+    vec3 n = voxelNormal(slot);
     if (dot(n, n) < 0.5) {  // opposite faces cancelled: use the strongest weight's axis
         vec3 pos, neg;
-        voxelNormalWeights(v, pos, neg);
+        voxelNormalWeights(slot, pos, neg);
         vec3 m = max(pos, neg);
         int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
         n = vec3(0.0);
@@ -47,7 +47,7 @@ vec4 bounced(ivec3 v) {
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
     vec3 E = gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
-    return vec4(d.rgb + voxelAlbedo(v) / PI * E, d.a);
+    return vec4(d.rgb + voxelAlbedo(slot) / PI * E, d.a);
 }
 
 void main() {
@@ -55,7 +55,7 @@ void main() {
     vec2 change = vec2(0.0);
     if (entry < list.header.counts.x) {
         ivec3 v = unpackVoxel(list.entries[entry]);
-        vec4 r = bounced(v);
+        vec4 r = bounced(v, entry);
         if (pc.flags.x != 0u && r.a > 0.0) {
             float before = luminance(imageLoad(outRadiance, v).rgb), after = luminance(r.rgb);
             change = vec2(abs(after - before), after);

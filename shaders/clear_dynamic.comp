@@ -4,9 +4,10 @@
 #include "shared/voxel_list_pass.h"
 #include "shared/voxelize_pass.h"
 
-// Zeroes the voxels that dynamic geometry wrote last frame (the list's dynamic
-// entries): their attributes, and their direct light and radiance, which the
-// per-voxel passes write only for listed voxels. Static voxels stay.
+// Frees the voxels that dynamic geometry wrote last frame (the list's dynamic
+// entries, whose slots the next dynamic voxelization takes again): zeroes their
+// slots' attributes and direct light, their radiance (the per-voxel passes
+// write only listed voxels) and their index. Static voxels stay.
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_CLEAR_GRID) uniform Grid { VoxelGrid grid; };
@@ -14,16 +15,18 @@ layout(set = 0, binding = BIND_CLEAR_ACCUM, r32f) uniform writeonly image3D accu
 VOXEL_LIST_BLOCK(BIND_CLEAR_LIST, readonly);
 layout(set = 0, binding = BIND_CLEAR_DIRECT, rgba16f) uniform writeonly image3D direct;
 layout(set = 0, binding = BIND_CLEAR_RADIANCE, rgba16f) uniform writeonly image3D radiance;
+VOXEL_INDEX_BLOCK(BIND_CLEAR_INDEX, );
 
 #include "lib/voxel_list.glsl"
 #include "lib/voxel_list_dispatch.glsl"
+#include "lib/voxel_index.glsl"
 
 void main() {
     uint i = list.header.counts.y + listInvocation();
     if (i >= list.header.counts.x) return;
     ivec3 v = unpackVoxel(list.entries[i]);
-    int N = int(grid.dims.x);
-    for (int c = 0; c < int(VOXEL_CHANNELS); ++c) imageStore(accum, v + ivec3(0, 0, c * N), vec4(0.0));
-    imageStore(direct, v, vec4(0.0));
+    for (uint c = 0u; c < VOXEL_CHANNELS; ++c) imageStore(accum, slotTexel(i, c), vec4(0.0));
+    imageStore(direct, slotTexel(i, 0u), vec4(0.0));
     imageStore(radiance, v, vec4(0.0));
+    voxelIndex[voxelIndexOffset(v)] = 0u;
 }

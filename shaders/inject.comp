@@ -7,7 +7,8 @@
 
 // Direct light per occupied voxel (paper section VI), visible or not: Lambert
 // radiance rho/pi * E * attenuation * visibility for every light, plus the
-// voxel's emitted radiance. Writes RGBA16F radiance with alpha = opacity (1 for
+// voxel's emitted radiance. Writes it to the voxel's slot of the direct light
+// (kept for the bounces) and to the radiance volume, alpha = opacity (1 for
 // occupied voxels).
 // One invocation per occupied voxel (an entry of the list); empty voxels keep
 // the zero that clears left.
@@ -18,12 +19,15 @@ layout(set = 0, binding = BIND_INJECT_ACCUM, r32f) uniform readonly image3D accu
 layout(set = 0, binding = BIND_INJECT_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = BIND_INJECT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
 layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
-layout(set = 0, binding = BIND_INJECT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
+layout(set = 0, binding = BIND_INJECT_DIRECT, rgba16f) uniform writeonly image3D outDirect;
+layout(set = 0, binding = BIND_INJECT_OUT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
+VOXEL_INDEX_BLOCK(BIND_INJECT_INDEX, readonly);
 VOXEL_LIST_BLOCK(BIND_INJECT_LIST, readonly);
 layout(push_constant) uniform Push { VoxelLightPush pc; };
 
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
+#include "lib/voxel_index.glsl"
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
 #include "lib/voxel_trace.glsl"
@@ -35,17 +39,18 @@ void main() {
     uint entry = listInvocation();
     if (entry >= list.header.counts.x) return;
     ivec3 v = unpackVoxel(list.entries[entry]);
-    vec3 albedo = voxelAlbedo(v);
+    uint slot = entry;
+    vec3 albedo = voxelAlbedo(slot);
     vec3 pos, neg;
-    voxelNormalWeights(v, pos, neg);
-    vec3 n = voxelNormal(v);
+    voxelNormalWeights(slot, pos, neg);
+    vec3 n = voxelNormal(slot);
     float s = grid.originSize.w;
     // Lit position: the voxel centre pushed half a voxel along its normal.
     vec3 P = grid.originSize.xyz + (vec3(v) + 0.5) * s + n * (0.5 * s);
 
     // Emitters lit explicitly (as LIGHT_AREA patches) keep their emission out
     // of the radiance that cones gather, or it would be counted twice.
-    vec3 radiance = pc.params.z > 0.5 ? voxelEmission(v) : vec3(0.0);
+    vec3 radiance = pc.params.z > 0.5 ? voxelEmission(slot) : vec3(0.0);
     for (uint i = 0u; i < pc.flags.x; ++i) {
         GpuLight light = lights[i];
         vec3 L;
@@ -68,5 +73,6 @@ void main() {
             vis = voxelRayVisibility(P, L, dist, mode == OCCLUSION_RAYCAST_SOFT, pc.params.x);
         radiance += albedo / PI * E * att * vis;
     }
+    imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, 1.0));
     imageStore(outRadiance, v, vec4(radiance, 1.0));
 }

@@ -15,20 +15,23 @@ layout(set = 0, binding = BIND_VIEW_ACCUM, r32f) uniform readonly image3D accum;
 layout(set = 0, binding = BIND_VIEW_RADIANCE, rgba16f) uniform readonly image3D radiance;
 layout(set = 0, binding = BIND_VIEW_DIRECTIONAL, rgba16f) uniform readonly image3D directional;
 layout(set = 0, binding = BIND_VIEW_OUT, rgba32f) uniform writeonly image2D outImage;
+VOXEL_INDEX_BLOCK(BIND_VIEW_INDEX, readonly);
 layout(push_constant) uniform Push { VoxelViewPush pc; };
 
 #include "lib/voxel_attributes.glsl"
+#include "lib/voxel_index.glsl"
 
 bool occupied(ivec3 v, uint mode) {
     if (mode == VIEW_RADIANCE) return imageLoad(radiance, v).a > 0.0;
     if (mode == VIEW_DIRECTIONAL) return imageLoad(directional, v).a > 0.0;
-    return voxelCount(v) > 0.0;
+    return voxelOccupied(v);
 }
 
 vec3 value(ivec3 v, uint mode) {
-    if (mode == VIEW_ALBEDO) return voxelAlbedo(v);
-    if (mode == VIEW_NORMAL) return voxelNormal(v) * 0.5 + 0.5;
-    if (mode == VIEW_EMISSION) return voxelEmission(v);
+    uint slot = voxelSlotAt(v) - 1u;  // occupied() held
+    if (mode == VIEW_ALBEDO) return voxelAlbedo(slot);
+    if (mode == VIEW_NORMAL) return voxelNormal(slot) * 0.5 + 0.5;
+    if (mode == VIEW_EMISSION) return voxelEmission(slot);
     if (mode == VIEW_RADIANCE) return imageLoad(radiance, v).rgb;
     return imageLoad(directional, v).rgb;
 }

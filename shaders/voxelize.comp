@@ -31,7 +31,7 @@ layout(set = 0, binding = BIND_VOXC_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_VOXC_DRAWS, std430) readonly buffer Draws { GpuDraw draws[]; };
 layout(set = 0, binding = BIND_VOXC_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = 0, binding = BIND_VOXC_ACCUM, r32f) uniform coherent image3D accum;
-layout(set = 0, binding = BIND_VOXC_FLAGS, r8ui) uniform coherent uimage3D flags;
+VOXEL_INDEX_BLOCK(BIND_VOXC_INDEX, coherent);
 layout(set = 0, binding = BIND_VOXC_VERTICES, std430) readonly buffer Vertices { float vertexData[]; };
 layout(set = 0, binding = BIND_VOXC_INDICES, std430) readonly buffer Indices { uint indexData[]; };
 layout(set = 0, binding = BIND_VOXC_GROUPS, std430) readonly buffer Groups { VoxcGroup groups[]; };
@@ -46,7 +46,7 @@ layout(push_constant) uniform Push { VoxelizeComputePush pc; };
 #include "lib/material.glsl"
 #include "lib/triangle_box.glsl"
 #include "lib/voxel_list.glsl"
-#include "lib/voxel_list_append.glsl"
+#include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
 
 struct Triangle {

@@ -10,7 +10,7 @@
 layout(set = 0, binding = BIND_VOX_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_VOX_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = 0, binding = BIND_VOX_ACCUM, r32f) uniform coherent image3D accum;
-layout(set = 0, binding = BIND_VOX_FLAGS, r8ui) uniform coherent uimage3D flags;
+VOXEL_INDEX_BLOCK(BIND_VOX_INDEX, coherent);
 VOXEL_LIST_BLOCK(BIND_VOX_LIST, );
 layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
 layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
@@ -18,7 +18,7 @@ layout(push_constant) uniform Push { VoxelizePush pc; };
 
 #include "lib/material.glsl"
 #include "lib/voxel_list.glsl"
-#include "lib/voxel_list_append.glsl"
+#include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
 
 layout(location = 0) in vec3 inNormal;

@@ -1,37 +1,72 @@
-// Adding one fragment's material to a voxel of the attribute volume: shared by
-// every voxelizer so they store exactly the same sums. Needs `grid`
-// (VoxelGrid), `accum` (r32f image3D, coherent) and `flags` (r8ui uimage3D)
-// declared by the including shader, the occupied-voxel list `list` and
-// lib/voxel_list.glsl, and GL_EXT_shader_atomic_float.
+// Adding one fragment's material to a voxel: shared by every voxelizer so they
+// store exactly the same sums. Needs `grid` (VoxelGrid), `accum` (r32f
+// image3D, coherent) and the index (VOXEL_INDEX_BLOCK, coherent) declared by
+// the including shader, the occupied-voxel list `list` (writable),
+// lib/voxel_list.glsl and lib/voxel_index.glsl, and GL_EXT_shader_atomic_float.
 
-void accumulateChannel(ivec3 voxel, uint channel, float value) {
-    if (value != 0.0) imageAtomicAdd(accum, voxel + ivec3(0, 0, int(channel * grid.dims.x)), value);
+// The voxel's index value, claiming a slot when the voxel is empty: the
+// invocation whose compare-and-swap finds 0 locks the voxel, takes the next
+// list entry as its slot and publishes it at once; the others read the
+// published value (and wait only while the owner is between the two steps).
+uint claimVoxel(ivec3 voxel, uint mode) {
+    uint at = voxelIndexOffset(voxel);
+    uint value = voxelIndex[at];
+    if (value != 0u && value != VOXEL_INDEX_LOCKED) return value;
+    value = atomicCompSwap(voxelIndex[at], 0u, VOXEL_INDEX_LOCKED);
+    if (value == 0u) {
+        uint slot = atomicAdd(list.header.counts.x, 1u);
+        if (slot < list.header.counts.z) {
+            list.entries[slot] = packVoxel(voxel);
+            value = slot + 1u;
+        } else {
+            atomicAdd(list.header.counts.w, 1u);
+            value = VOXEL_INDEX_FULL;
+        }
+        if (mode != VOXELIZE_DYNAMIC) value |= VOXEL_INDEX_STATIC;
+        atomicExchange(voxelIndex[at], value);
+        return value;
+    }
+    // Bounded: a fragment shader's helper invocations get undefined atomic
+    // results (and have no side effects). A real invocation never gets near
+    // the bound; if one did, it is counted as dropped, like a full list.
+    for (uint spins = 0u; value == VOXEL_INDEX_LOCKED; ++spins) {
+        if (spins == VOXEL_CLAIM_SPINS) {
+            atomicAdd(list.header.counts.w, 1u);
+            return VOXEL_INDEX_FULL;
+        }
+        value = atomicOr(voxelIndex[at], 0u);
+    }
+    return value;
 }
 
-// Static voxelization flags what it writes; dynamic voxelization leaves
+void accumulateChannel(uint slot, uint channel, float value) {
+    if (value != 0.0) imageAtomicAdd(accum, slotTexel(slot, channel), value);
+}
+
+// Static voxelization claims voxels as static; dynamic voxelization leaves
 // static voxels alone (they are cleared only when static geometry changes).
-// The fragment that finds the voxel empty appends it to the occupied-voxel
-// list (exactly one does: the count's atomic add returns what was there).
-// Returns false when the voxel was skipped.
+// Returns false when the fragment was skipped (a static voxel under dynamic
+// voxelization, or no slot left: counted for the host, which grows the
+// storage and voxelizes again).
 bool accumulateFragment(ivec3 voxel, uint mode, vec3 albedo, vec3 emission, vec3 n) {
-    if (mode == VOXELIZE_DYNAMIC) {
-        if (imageLoad(flags, voxel).r == VOXEL_FLAG_STATIC) return false;
-    } else {
-        imageStore(flags, voxel, uvec4(VOXEL_FLAG_STATIC));
-    }
-    accumulateChannel(voxel, CH_ALBEDO_R, albedo.r);
-    accumulateChannel(voxel, CH_ALBEDO_G, albedo.g);
-    accumulateChannel(voxel, CH_ALBEDO_B, albedo.b);
-    if (imageAtomicAdd(accum, voxel + ivec3(0, 0, int(CH_COUNT * grid.dims.x)), 1.0) == 0.0) appendVoxel(voxel);
-    accumulateChannel(voxel, CH_EMISSION_R, emission.r);
-    accumulateChannel(voxel, CH_EMISSION_G, emission.g);
-    accumulateChannel(voxel, CH_EMISSION_B, emission.b);
+    uint value = claimVoxel(voxel, mode);
+    if (mode == VOXELIZE_DYNAMIC && (value & VOXEL_INDEX_STATIC) != 0u) return false;
+    uint slot1 = indexSlot(value);
+    if (slot1 == 0u) return false;
+    uint slot = slot1 - 1u;
+    accumulateChannel(slot, CH_ALBEDO_R, albedo.r);
+    accumulateChannel(slot, CH_ALBEDO_G, albedo.g);
+    accumulateChannel(slot, CH_ALBEDO_B, albedo.b);
+    accumulateChannel(slot, CH_COUNT, 1.0);
+    accumulateChannel(slot, CH_EMISSION_R, emission.r);
+    accumulateChannel(slot, CH_EMISSION_G, emission.g);
+    accumulateChannel(slot, CH_EMISSION_B, emission.b);
     vec3 n2 = n * n;
-    accumulateChannel(voxel, CH_NORMAL_POS_X, n.x > 0.0 ? n2.x : 0.0);
-    accumulateChannel(voxel, CH_NORMAL_NEG_X, n.x < 0.0 ? n2.x : 0.0);
-    accumulateChannel(voxel, CH_NORMAL_POS_Y, n.y > 0.0 ? n2.y : 0.0);
-    accumulateChannel(voxel, CH_NORMAL_NEG_Y, n.y < 0.0 ? n2.y : 0.0);
-    accumulateChannel(voxel, CH_NORMAL_POS_Z, n.z > 0.0 ? n2.z : 0.0);
-    accumulateChannel(voxel, CH_NORMAL_NEG_Z, n.z < 0.0 ? n2.z : 0.0);
+    accumulateChannel(slot, CH_NORMAL_POS_X, n.x > 0.0 ? n2.x : 0.0);
+    accumulateChannel(slot, CH_NORMAL_NEG_X, n.x < 0.0 ? n2.x : 0.0);
+    accumulateChannel(slot, CH_NORMAL_POS_Y, n.y > 0.0 ? n2.y : 0.0);
+    accumulateChannel(slot, CH_NORMAL_NEG_Y, n.y < 0.0 ? n2.y : 0.0);
+    accumulateChannel(slot, CH_NORMAL_POS_Z, n.z > 0.0 ? n2.z : 0.0);
+    accumulateChannel(slot, CH_NORMAL_NEG_Z, n.z < 0.0 ? n2.z : 0.0);
     return true;
 }

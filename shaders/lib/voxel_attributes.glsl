@@ -1,34 +1,35 @@
-// Averages of the accumulated voxel attributes. Needs `grid` (VoxelGrid) and
-// `accum` (r32f image3D) declared by the including shader.
+// Averages of the accumulated voxel attributes of one slot (shared/voxel_data.h).
+// Needs `accum` (r32f image3D) declared by the including shader.
 
-float voxelChannel(ivec3 v, uint channel) {
-    return imageLoad(accum, v + ivec3(0, 0, int(channel * grid.dims.x))).r;
+float voxelChannel(uint slot, uint channel) { return imageLoad(accum, slotTexel(slot, channel)).r; }
+
+float voxelCount(uint slot) { return voxelChannel(slot, CH_COUNT); }
+
+vec3 voxelAlbedo(uint slot) {
+    float n = max(voxelCount(slot), 1e-20);
+    return vec3(voxelChannel(slot, CH_ALBEDO_R), voxelChannel(slot, CH_ALBEDO_G), voxelChannel(slot, CH_ALBEDO_B)) / n;
 }
 
-float voxelCount(ivec3 v) { return voxelChannel(v, CH_COUNT); }
-
-vec3 voxelAlbedo(ivec3 v) {
-    float n = max(voxelCount(v), 1e-20);
-    return vec3(voxelChannel(v, CH_ALBEDO_R), voxelChannel(v, CH_ALBEDO_G), voxelChannel(v, CH_ALBEDO_B)) / n;
-}
-
-vec3 voxelEmission(ivec3 v) {
-    float n = max(voxelCount(v), 1e-20);
-    return vec3(voxelChannel(v, CH_EMISSION_R), voxelChannel(v, CH_EMISSION_G), voxelChannel(v, CH_EMISSION_B)) / n;
+vec3 voxelEmission(uint slot) {
+    float n = max(voxelCount(slot), 1e-20);
+    return vec3(voxelChannel(slot, CH_EMISSION_R), voxelChannel(slot, CH_EMISSION_G),
+                voxelChannel(slot, CH_EMISSION_B)) / n;
 }
 
 // Per-axis normal weights: pos.a = mean of n_a^2 over fragments with n_a > 0.
-void voxelNormalWeights(ivec3 v, out vec3 pos, out vec3 neg) {
-    float n = max(voxelCount(v), 1e-20);
-    pos = vec3(voxelChannel(v, CH_NORMAL_POS_X), voxelChannel(v, CH_NORMAL_POS_Y), voxelChannel(v, CH_NORMAL_POS_Z)) / n;
-    neg = vec3(voxelChannel(v, CH_NORMAL_NEG_X), voxelChannel(v, CH_NORMAL_NEG_Y), voxelChannel(v, CH_NORMAL_NEG_Z)) / n;
+void voxelNormalWeights(uint slot, out vec3 pos, out vec3 neg) {
+    float n = max(voxelCount(slot), 1e-20);
+    pos = vec3(voxelChannel(slot, CH_NORMAL_POS_X), voxelChannel(slot, CH_NORMAL_POS_Y),
+               voxelChannel(slot, CH_NORMAL_POS_Z)) / n;
+    neg = vec3(voxelChannel(slot, CH_NORMAL_NEG_X), voxelChannel(slot, CH_NORMAL_NEG_Y),
+               voxelChannel(slot, CH_NORMAL_NEG_Z)) / n;
 }
 
 // A representative unit normal: sqrt of the weights keeps a single surface's
 // normal exact; opposite faces cancel along their axis.
-vec3 voxelNormal(ivec3 v) {
+vec3 voxelNormal(uint slot) {
     vec3 pos, neg;
-    voxelNormalWeights(v, pos, neg);
+    voxelNormalWeights(slot, pos, neg);
     vec3 n = sqrt(pos) - sqrt(neg);
     float len = length(n);
     return len > 1e-6 ? n / len : vec3(0.0);

@@ -1,5 +1,5 @@
-// Shadow rays through the voxel attribute volume (paper section VI-C). Needs
-// `grid` and `accum` (see voxel_attributes.glsl).
+// Shadow rays through the voxel grid's occupancy (paper section VI-C). Needs
+// `grid` and lib/voxel_index.glsl.
 
 // Visibility in [0, 1] from world position P toward the light along L, up to
 // `dist` metres. Hard: 0 at the first occupied voxel. Soft: nu += (1 - nu) *
@@ -19,7 +19,7 @@ float voxelRayVisibility(vec3 P, vec3 L, float dist, bool soft, float kappa) {
         if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(N)))) break;
         if (v == last || v == self) continue;
         last = v;
-        if (voxelCount(v) <= 0.0) continue;
+        if (!voxelOccupied(v)) continue;
         if (!soft) return 0.0;
         nu += (1.0 - nu) * min(kappa / t, 1.0);
         if (nu > 0.999) return 0.0;

@@ -21,8 +21,10 @@ DVSGI_CONST(uint, BIND_INJECT_ACCUM, 1);
 DVSGI_CONST(uint, BIND_INJECT_LIGHTS, 2);
 DVSGI_CONST(uint, BIND_INJECT_SHADOW_VIEWS, 3);
 DVSGI_CONST(uint, BIND_INJECT_SHADOW_MAP, 4);
-DVSGI_CONST(uint, BIND_INJECT_RADIANCE, 5);
-DVSGI_CONST(uint, BIND_INJECT_LIST, 6);  // occupied-voxel list: one invocation per entry
+DVSGI_CONST(uint, BIND_INJECT_DIRECT, 5);  // per-slot direct light + emission (kept for the bounces)
+DVSGI_CONST(uint, BIND_INJECT_LIST, 6);  // occupied-voxel list: one invocation per entry (= slot)
+DVSGI_CONST(uint, BIND_INJECT_INDEX, 7);  // slot index volume: occupancy for voxel shadow rays
+DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1
 
 DVSGI_END
 

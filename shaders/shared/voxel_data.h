@@ -1,10 +1,14 @@
 // The voxel grid and its volumes, shared by C++ and GLSL.
 //
-// Voxel attributes are accumulated, not averaged in place: one R32_SFLOAT 3D
-// image holds VOXEL_CHANNELS slabs of N^3 floats stacked along z (slab c spans
-// z in [c*N, (c+1)*N)). Fragments add into them with float atomics, so nothing
-// saturates, nothing is dropped, and HDR emission survives. Readers divide by
-// the fragment count (channel CH_COUNT) to get averages.
+// Voxel attributes live per slot, not per grid voxel: only occupied voxels
+// have one. A uint index buffer over the N^3 grid holds each voxel's
+// slot + 1 (0 = empty) and VOXEL_INDEX_STATIC; slot s is also entry s of the
+// occupied-voxel list (shared/voxel_list_pass.h). The attributes are
+// accumulated, not averaged in place: an R32_SFLOAT 3D image of
+// VOXEL_SLOT_ROW x rows x VOXEL_CHANNELS texels holds channel c of slot s at
+// (s % ROW, s / ROW, c). Fragments add into them with float atomics, so
+// nothing saturates, nothing is dropped, and HDR emission survives. Readers
+// divide by the fragment count (channel CH_COUNT) to get averages.
 #ifndef DVSGI_SHARED_VOXEL_DATA_H
 #define DVSGI_SHARED_VOXEL_DATA_H
 
@@ -30,11 +34,24 @@ DVSGI_CONST(uint, CH_NORMAL_POS_Z, 11);
 DVSGI_CONST(uint, CH_NORMAL_NEG_Z, 12);
 DVSGI_CONST(uint, VOXEL_CHANNELS, 13);
 
-DVSGI_CONST(uint, VOXEL_FLAG_STATIC, 1);
+// Slots per row of the per-slot images (attributes, voxel direct light);
+// capacities are whole rows.
+DVSGI_CONST(uint, VOXEL_SLOT_ROW, 4096);
+// Index volume values: slot + 1 in the low 31 bits, the static bit on top.
+DVSGI_CONST(uint, VOXEL_INDEX_STATIC, 0x80000000u);
+DVSGI_CONST(uint, VOXEL_INDEX_SLOT_MASK, 0x7FFFFFFFu);
+// Transient while the voxelizer that claimed the voxel takes its slot.
+DVSGI_CONST(uint, VOXEL_INDEX_LOCKED, 0xFFFFFFFFu);
+// Claimed when every slot was taken: no slot, the fragment is dropped and
+// counted (VoxelListHeader.counts.w), and the host grows the storage and
+// voxelizes again.
+DVSGI_CONST(uint, VOXEL_INDEX_FULL, 0x7FFFFFFFu);
+// Reads of a locked index before a waiting invocation gives up (claimVoxel).
+DVSGI_CONST(uint, VOXEL_CLAIM_SPINS, 1u << 20);
 
 struct VoxelGrid {
     vec4 originSize;  // xyz world position of the grid's minimum corner, w voxel edge (m)
-    uvec4 dims;       // x N (voxels per edge), y channels, z mip count of the directional volumes
+    uvec4 dims;       // x N (voxels per edge), y channels, z mip count of the directional volumes, w slot capacity
 };
 DVSGI_CHECK_SIZE(VoxelGrid, 32);
 
@@ -68,5 +85,15 @@ DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear
 DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips (array of 6)
 
 DVSGI_END
+
+#ifndef __cplusplus
+// The texel of channel `channel` of slot `slot` in a per-slot image.
+ivec3 slotTexel(uint slot, uint channel) { return ivec3(slot % VOXEL_SLOT_ROW, slot / VOXEL_SLOT_ROW, channel); }
+// The index as the GLSL buffer block `voxelIndex` (N^3 uints, x fastest) at
+// binding B of set 0, access qualifier Q. A buffer rather than an R32UI
+// image: nothing filters it, and the host reads and writes it as plain words.
+#define VOXEL_INDEX_BLOCK(B, Q) \
+    layout(set = 0, binding = B, std430) Q buffer VoxelIndex { uint voxelIndex[]; }
+#endif
 
 #endif

@@ -1,8 +1,9 @@
 // The occupied-voxel list (vxgi/voxel_list.cpp, voxel_list.comp): one packed
 // coordinate per occupied voxel, static voxels first, then the dynamic ones
-// of the current frame. The voxelizers append a voxel when its first fragment
-// lands; the per-voxel passes (direct light, bounce, dynamic clear) run over
-// the list with indirect dispatches instead of over the whole N^3 grid.
+// of the current frame. Entry i is also slot i of the per-slot storage
+// (shared/voxel_data.h). The voxelizers claim a slot when a voxel's first
+// fragment lands; the per-voxel passes (direct light, bounce, dynamic clear)
+// run over the list with indirect dispatches instead of over the N^3 grid.
 // Shared by C++ and GLSL.
 #ifndef DVSGI_SHARED_VOXEL_LIST_PASS_H
 #define DVSGI_SHARED_VOXEL_LIST_PASS_H
@@ -13,7 +14,7 @@ DVSGI_BEGIN
 
 // The list buffer starts with this header; entries (uint, x | y << 10 | z << 20) follow.
 struct VoxelListHeader {
-    uvec4 counts;         // x entries appended, y of them static (the first y), z capacity, w entries dropped
+    uvec4 counts;         // x entries appended, y of them static (the first y), z capacity (slots), w claims dropped
     uvec4 allGroups;      // vkCmdDispatchIndirect arguments (xyz) over every entry
     uvec4 dynamicGroups;  // over the dynamic entries [y, x)
 };
@@ -30,7 +31,6 @@ DVSGI_CONST(uint, VOXEL_LIST_COORD_BITS, 10);  // N <= 1024
 DVSGI_CONST(uint, LIST_FINISH, 0);         // clamp the count, write both dispatch arguments
 DVSGI_CONST(uint, LIST_FINISH_STATIC, 1);  // as FINISH, after static voxelization: all entries are static
 DVSGI_CONST(uint, LIST_DROP_DYNAMIC, 2);   // count = static count (after the dynamic voxels were cleared)
-DVSGI_CONST(uint, LIST_SCAN, 3);           // append every voxel with fragments (count channel > 0), over N^3
 
 struct VoxelListPush {
     uvec4 mode;  // x LIST_*
@@ -39,7 +39,6 @@ DVSGI_CHECK_SIZE(VoxelListPush, 16);
 
 DVSGI_CONST(uint, BIND_LIST_GRID, 0);
 DVSGI_CONST(uint, BIND_LIST_BUFFER, 1);
-DVSGI_CONST(uint, BIND_LIST_ACCUM, 2);  // read by LIST_SCAN
 
 DVSGI_END
 

@@ -8,7 +8,7 @@
 DVSGI_BEGIN
 
 // Voxelization modes (VoxelizePush.mode.x).
-DVSGI_CONST(uint, VOXELIZE_STATIC, 0);   // writes and flags voxels
+DVSGI_CONST(uint, VOXELIZE_STATIC, 0);   // claims voxels as static
 DVSGI_CONST(uint, VOXELIZE_DYNAMIC, 1);  // skips voxels flagged static
 
 struct VoxelizePush {
@@ -24,8 +24,8 @@ DVSGI_CONST(uint, BIND_VOX_GRID, 0);
 DVSGI_CONST(uint, BIND_VOX_DRAWS, 1);
 DVSGI_CONST(uint, BIND_VOX_MATERIALS, 2);
 DVSGI_CONST(uint, BIND_VOX_ACCUM, 3);
-DVSGI_CONST(uint, BIND_VOX_FLAGS, 4);
-DVSGI_CONST(uint, BIND_VOX_LIST, 5);  // occupied-voxel list (appended to)
+DVSGI_CONST(uint, BIND_VOX_INDEX, 4);  // slot index volume (claimed)
+DVSGI_CONST(uint, BIND_VOX_LIST, 5);  // occupied-voxel list (a claimed slot appends its voxel)
 
 // Dynamic-voxel clear: over the list's dynamic entries (VOXEL_LIST_GROUP per workgroup).
 DVSGI_CONST(uint, BIND_CLEAR_GRID, 0);
@@ -33,6 +33,7 @@ DVSGI_CONST(uint, BIND_CLEAR_ACCUM, 1);
 DVSGI_CONST(uint, BIND_CLEAR_LIST, 2);
 DVSGI_CONST(uint, BIND_CLEAR_DIRECT, 3);
 DVSGI_CONST(uint, BIND_CLEAR_RADIANCE, 4);
+DVSGI_CONST(uint, BIND_CLEAR_INDEX, 5);
 
 DVSGI_END
 

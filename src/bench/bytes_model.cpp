@@ -12,8 +12,8 @@ namespace {
 namespace sh = dvsgi::shader;
 
 // Formats from docs/ARCHITECTURE.md ("Volumes", "The frame").
-constexpr uint64_t kAttributeBytes = sh::VOXEL_CHANNELS * 4;  // 13 R32F channels per voxel
-constexpr uint64_t kFlagBytes = 1;                            // R8_UINT
+constexpr uint64_t kAttributeBytes = sh::VOXEL_CHANNELS * 4;  // 13 R32F channels per slot
+constexpr uint64_t kIndexBytes = 4;                           // R32_UINT slot index per grid voxel
 constexpr uint64_t kVoxelLightBytes = 8;                      // RGBA16F: direct light, radiance, directional
 constexpr uint64_t kListEntryBytes = 4;                       // occupied-voxel list: packed coordinate
 // The bounce reads the fragment count, albedo and six normal weights, not the
@@ -57,25 +57,29 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
     const uint64_t bounces = in.bounces;
 
     if (in.voxels > 0) {
-        // The old contents are unknown: every attribute, flag, direct light and
-        // radiance texel is written (the per-voxel passes write occupied voxels only).
-        out.push_back({"clear all voxels", 0, n3 * (kAttributeBytes + kFlagBytes + 2 * kVoxelLightBytes)});
+        // The old contents are unknown: every index and radiance texel and every
+        // slot's attributes and direct light are written (the per-voxel passes
+        // write occupied voxels only).
+        const uint64_t slots = in.slots ? in.slots : vxgi::defaultSlotCapacity(in.voxels);
+        out.push_back({"clear all voxels", 0,
+                       n3 * (kIndexBytes + kVoxelLightBytes) + slots * (kAttributeBytes + kVoxelLightBytes)});
         out.push_back({"voxelize static", in.staticGeometryBytes,
-                       staticVoxels * (kAttributeBytes + kFlagBytes + kListEntryBytes)});
+                       staticVoxels * (kAttributeBytes + kIndexBytes + kListEntryBytes)});
         // The voxels dynamic geometry wrote last frame (their list entries);
         // this frame's count stands in for them (the object moves a voxel or
-        // less per frame). Attributes, direct light and radiance are zeroed.
+        // less per frame). Slots (attributes, direct light), radiance and index are zeroed.
         out.push_back({"clear dynamic voxels", dynamic * kListEntryBytes,
-                       dynamic * (kAttributeBytes + 2 * kVoxelLightBytes)});
-        out.push_back({"voxelize dynamic", in.dynamicGeometryBytes + dynamic * kFlagBytes,
-                       dynamic * (kAttributeBytes + kListEntryBytes)});
+                       dynamic * (kAttributeBytes + 2 * kVoxelLightBytes + kIndexBytes)});
+        out.push_back({"voxelize dynamic", in.dynamicGeometryBytes + dynamic * kIndexBytes,
+                       dynamic * (kAttributeBytes + kIndexBytes + kListEntryBytes)});
     }
     // Every view rasterizes all geometry and writes its whole layer.
     out.push_back({"shadow maps", geometry * in.shadowViews,
                    uint64_t(in.shadowMapSize) * in.shadowMapSize * kDepthBytes * in.shadowViews});
     if (in.voxels > 0) {
+        // Direct light into the slot and the radiance volume.
         out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),
-                       occupied * kVoxelLightBytes});
+                       occupied * 2 * kVoxelLightBytes});
         out.push_back(filtering(in.voxels, "voxel filtering"));
         // Cone samples are not counted: the bytes are those of the voxel's own
         // attributes, direct light and result.

@@ -13,6 +13,7 @@ namespace dvsgi::bench {
 
 struct ModelInputs {
     uint32_t voxels = 0;          // N of the N^3 grid
+    uint32_t slots = 0;           // voxel slot capacity (0: vxgi::defaultSlotCapacity)
     uint64_t occupiedVoxels = 0;  // fragment count > 0 after the frame (vxgi::countVoxels)
     uint64_t dynamicVoxels = 0;   // occupied and not flagged static
     uint32_t outputWidth = 0, outputHeight = 0;

@@ -78,6 +78,8 @@ inline constexpr BufferUse FragmentReadWrite{
     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
 // vkCmdFillBuffer / vkCmdCopyBuffer destination.
 inline constexpr BufferUse BufferTransferWrite{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
+// vkCmdCopyBuffer source.
+inline constexpr BufferUse BufferTransferRead{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
 inline constexpr BufferUse HostRead{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT};
 }  // namespace use
 

@@ -20,6 +20,7 @@
 #include "render/shadows.h"
 #include "shared/bounce_pass.h"
 #include "shared/scene_data.h"
+#include "shared/voxel_list_pass.h"
 #include "vxgi/aniso_filter.h"
 #include "vxgi/voxel_list.h"
 #include "vxgi/bounce.h"
@@ -102,11 +103,13 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         const vxgi::GridSpec grid =
             settings.hasVoxelBox ? vxgi::gridForBox(settings.voxelBoxMin, settings.voxelBoxMax, settings.voxels)
                                  : vxgi::fitGrid(sceneGpu_->bounds, settings.voxels);
-        volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid);
+        volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid, settings.voxelSlots);
         voxelizer_ =
             std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative, settings.voxelizer);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
         list_ = std::make_unique<vxgi::VoxelListPass>(ctx);
+        listHeader_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::VoxelListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                    gpu::MemoryUse::Readback, "voxel list header");
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
@@ -213,6 +216,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
         }
         voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Dynamic, t);
         list_->finish(cmd, tracker_, *volumes_, false);
+        list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
     }
     shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, targets_->shadowMap, t);
     if (!voxelizer_) return;
@@ -228,7 +232,6 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
         recordBounce(cmd, false);
         return;
     }
-    inject_->copyToRadiance(cmd, tracker_, *volumes_);
     aniso_->record(cmd, tracker_, *volumes_, t, "voxel filtering");
 }
 
@@ -282,7 +285,7 @@ bool Renderer::feedbackFrame() const {
 double Renderer::bounceChange() const {
     const float* f = static_cast<const float*>(bounceStats_->mapped());
     double change = 0.0, total = 0.0;
-    const uint32_t count = vxgi::BouncePass::statsFloats(volumes_->grid.n);
+    const uint32_t count = vxgi::BouncePass::statsFloats(volumes_->slots);
     for (uint32_t i = 0; i + 1 < count; i += sh::BOUNCE_STATS_FLOATS) {
         change += f[i];
         total += f[i + 1];
@@ -300,7 +303,7 @@ FrameStats Renderer::renderFrame() {
     const uint32_t fixed = voxelizer_ && vl.bounceMode == vxgi::BounceMode::Fixed ? vl.bounces : 0;
     if (converge && !bounceStats_)
         bounceStats_ = std::make_unique<gpu::Buffer>(
-            ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(volumes_->grid.n),
+            ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(volumes_->slots),
             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
             gpu::MemoryUse::Readback, "bounce statistics");
     // Converging takes one submission per bounce (the host reads each one's
@@ -312,6 +315,7 @@ FrameStats Renderer::renderFrame() {
         if (converge) recordBounce(cmd, true);
         if (!converge) recordImage(cmd);
     });
+    if (growVoxelSlots()) return renderFrame();
     stats.bounces = feedback ? 1 : fixed;
     if (converge) {
         // Bounce increments shrink geometrically (by r per bounce), so what is
@@ -354,9 +358,31 @@ FrameStats Renderer::renderFrame() {
     return stats;
 }
 
+bool Renderer::growVoxelSlots() {
+    if (!voxelizer_) return false;
+    sh::VoxelListHeader header;
+    std::memcpy(&header, listHeader_->mapped(), sizeof(header));
+    if (header.counts.w == 0) return false;
+    // Every claim past the capacity was counted; a quarter more leaves room
+    // for moving objects. The old volumes are idle (the frame was waited for).
+    const uint64_t wanted = (uint64_t(volumes_->slots) + header.counts.w) * 5 / 4;
+    const uint32_t slots = vxgi::roundSlotCapacity(volumes_->grid.n, wanted);
+    if (slots <= volumes_->slots)
+        throw std::runtime_error("voxels: a voxelization ran out of its " + std::to_string(volumes_->slots) +
+                                 " voxel slots, which already cover the whole grid");
+    const vxgi::GridSpec grid = volumes_->grid;
+    volumes_.reset();
+    volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, slots);
+    for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
+    bounceStats_.reset();
+    staticDirty_ = true;
+    haveHistory_ = false;
+    return true;
+}
+
 bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
     return a.width != b.width || a.height != b.height || a.supersample != b.supersample ||
-           a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels ||
+           a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels || a.voxelSlots != b.voxelSlots ||
            a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
            a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.gather.traceScale != b.gather.traceScale ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
@@ -416,8 +442,8 @@ std::vector<MemoryItem> Renderer::memory() const {
         {"output", targets_->output.memorySize()},
     };
     if (voxelizer_) {
+        items.push_back({"voxel slot index", volumes_->index.size()});
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});
-        items.push_back({"voxel static flags", volumes_->flags.memorySize()});
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
         items.push_back({"voxel direct light", volumes_->direct.memorySize()});
         uint64_t directional = 0;

@@ -42,6 +42,7 @@ struct RenderSettings {
     bool shadows = true;
     float normalOffsetTexels = 1.5f;  // shadow lookup offset along the normal
     uint32_t voxels = 128;            // N of the N^3 grid; 0 = no voxel passes
+    uint32_t voxelSlots = 0;          // initial voxel slot capacity (0 = vxgi::defaultSlotCapacity); grows as needed
     bool hasVoxelBox = false;         // grid on a user box instead of the scene bounds
     glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
     bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
@@ -97,7 +98,9 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    FrameStats renderFrame();                  // records, submits and waits
+    // Records, submits and waits. When voxelization ran out of voxel slots,
+    // grows the voxel storage and renders the frame again.
+    FrameStats renderFrame();
 
     // Takes new settings from the next frame on when none of the changes needs
     // new resources (needsNewRenderer); otherwise returns false and keeps the
@@ -149,6 +152,7 @@ private:
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
+    bool growVoxelSlots();       // after a voxelization that ran out of slots: bigger volumes
 
     const gpu::Context& ctx_;
     scene::Scene scene_;  // own copy: animation and edits change it
@@ -179,7 +183,8 @@ private:
     bool staticDirty_ = true;
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
-    std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(N) floats
+    std::unique_ptr<gpu::Buffer> listHeader_;  // host-visible copy of the list header after voxelization
+    std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(slots) floats
     std::unique_ptr<gpu::GpuTimers> timers_;
 
 public:

@@ -36,6 +36,7 @@ VoxelViewPass::VoxelViewPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.bindings = {{sh::BIND_VIEW_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                        {sh::BIND_VIEW_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                        {sh::BIND_VIEW_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_VIEW_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VIEW_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_VIEW_DIRECTIONAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_VIEW_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
@@ -48,7 +49,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
                            const gpu::Buffer& frame, const gpu::Image& output, const ViewSettings& view,
                            gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel view");
-    tracker.image(v.accum, gpu::use::ComputeRead).image(v.radiance, gpu::use::ComputeRead);
+    tracker.image(v.accum, gpu::use::ComputeRead).buffer(v.index, gpu::use::BufferComputeRead).image(v.radiance, gpu::use::ComputeRead);
     for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
     tracker.image(output, gpu::use::ComputeWrite, true).flush(cmd);
     const uint32_t mip = std::min(view.mip, v.directionalMips - 1);
@@ -58,6 +59,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
         .uniformBuffer(sh::BIND_VIEW_GRID, v.gridBuffer.handle())
         .uniformBuffer(sh::BIND_VIEW_FRAME, frame.handle())
         .storageImage(sh::BIND_VIEW_ACCUM, v.accum.view())
+        .storageBuffer(sh::BIND_VIEW_INDEX, v.index.handle())
         .storageImage(sh::BIND_VIEW_RADIANCE, v.radiance.view())
         .storageImage(sh::BIND_VIEW_DIRECTIONAL, v.directional[std::min(view.direction, 5u)].mipView(mip))
         .storageImage(sh::BIND_VIEW_OUT, output.view())

@@ -39,7 +39,7 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
 }
 
-uint32_t BouncePass::statsFloats(uint32_t n) { return voxelListMaxGroups(n) * sh::BOUNCE_STATS_FLOATS; }
+uint32_t BouncePass::statsFloats(uint32_t slots) { return voxelListMaxGroups(slots) * sh::BOUNCE_STATS_FLOATS; }
 
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
                         const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {

@@ -21,12 +21,12 @@ class BouncePass {
 public:
     explicit BouncePass(const gpu::Context& ctx);
     // Reads the attributes, `direct` and the directional volumes (through
-    // `volumeSampler`), writes `radiance`. `stats` (optional, statsFloats(N)
+    // `volumeSampler`), writes `radiance`. `stats` (optional, statsFloats(slots)
     // floats, host-visible) receives per-workgroup sums of |luminance change|
     // and luminance over occupied voxels, readable by the host after the submission.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, VkSampler volumeSampler,
                 const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const;
-    static uint32_t statsFloats(uint32_t n);
+    static uint32_t statsFloats(uint32_t slots);
 
 private:
     const gpu::Context& ctx_;

@@ -30,8 +30,10 @@ InjectPass::InjectPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_INJECT_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
-                       {sh::BIND_INJECT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_INJECT_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                       {sh::BIND_INJECT_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_INJECT_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_INJECT_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_INJECT_OUT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelLightPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kInject), layout, "voxel inject");
@@ -42,7 +44,9 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     gpu::GpuTimerScope timer(timers, cmd, "voxel direct light");
     tracker.image(v.accum, gpu::use::ComputeRead)
         .image(s.shadowMap, gpu::use::ShaderRead)
-        .image(v.direct, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
+        .buffer(v.index, gpu::use::BufferComputeRead)
+        .image(v.direct, gpu::use::ComputeWrite)
+        .image(v.radiance, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .flush(cmd);
     gpu::bind(cmd, pipeline_);
@@ -52,8 +56,10 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_INJECT_LIGHTS, s.lights.handle())
         .storageBuffer(sh::BIND_INJECT_SHADOW_VIEWS, s.views.handle())
         .sampledImage(sh::BIND_INJECT_SHADOW_MAP, s.shadowMap.view(), s.shadowSampler)
-        .storageImage(sh::BIND_INJECT_RADIANCE, v.direct.view())
+        .storageImage(sh::BIND_INJECT_DIRECT, v.direct.view())
         .storageBuffer(sh::BIND_INJECT_LIST, v.list.handle())
+        .storageBuffer(sh::BIND_INJECT_INDEX, v.index.handle())
+        .storageImage(sh::BIND_INJECT_OUT_RADIANCE, v.radiance.view())
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelLightPush push{
         glm::uvec4(s.lightCount, settings.normalWeighted ? 1u : 0u, uint32_t(settings.occlusion),
@@ -61,16 +67,6 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f, 0.0f)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
-}
-
-void InjectPass::copyToRadiance(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
-    tracker.image(v.direct, gpu::use::CopySrcGeneral).image(v.radiance, gpu::use::CopyDstGeneral, true).flush(cmd);
-    VkImageCopy region{};
-    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.dstSubresource = region.srcSubresource;
-    region.extent = v.direct.desc().extent;
-    vkCmdCopyImage(cmd, v.direct.handle(), VK_IMAGE_LAYOUT_GENERAL, v.radiance.handle(), VK_IMAGE_LAYOUT_GENERAL, 1,
-                   &region);
 }
 
 }  // namespace dvsgi::vxgi

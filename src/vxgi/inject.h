@@ -1,6 +1,7 @@
 // Voxel direct light (paper sections VI, VII): every occupied voxel's direct
 // light from each light (shadow maps, raycasts through the voxels, or none)
-// plus its emission, into VoxelVolumes::direct.
+// plus its emission, into VoxelVolumes::direct (per slot) and ::radiance (the
+// start of the bounce iteration).
 #pragma once
 
 #include "gpu/pipeline.h"
@@ -28,11 +29,10 @@ struct ShadowInputs {
 class InjectPass {
 public:
     explicit InjectPass(const gpu::Context& ctx);
-    // Reads the list and the attributes, writes `direct` of the listed (occupied) voxels.
+    // Reads the list, the attributes and the index (voxel shadow rays); writes
+    // `direct` and `radiance` of the listed (occupied) voxels.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, const ShadowInputs& shadows,
                 const VoxelLightSettings& settings, gpu::GpuTimers* timers) const;
-    // Copies `direct` into `radiance`: the start of the bounce iteration.
-    void copyToRadiance(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
 
 private:
     const gpu::Context& ctx_;

@@ -46,34 +46,48 @@ uint32_t directionalMipCount(uint32_t n) {
     return uint32_t(std::log2(double(std::max(n / 2, 1u)))) + 1;
 }
 
-std::vector<VolumeMemory> volumeMemory(uint32_t n) {
+uint32_t roundSlotCapacity(uint32_t n, uint64_t wanted) {
+    const uint64_t row = sh::VOXEL_SLOT_ROW;
+    const uint64_t all = (uint64_t(n) * n * n + row - 1) / row * row;
+    const uint64_t slots = std::min((std::max<uint64_t>(wanted, 1) + row - 1) / row * row, all);
+    return uint32_t(slots);
+}
+
+uint32_t defaultSlotCapacity(uint32_t n) { return roundSlotCapacity(n, 16ull * n * n); }
+
+std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots) {
     const uint64_t n3 = uint64_t(n) * n * n;
     uint64_t directional = 0;
     for (uint64_t s = n / 2; s >= 1; s /= 2) directional += s * s * s * 8;
     return {
-        {"voxel attributes (13 channels)", "R32_SFLOAT", n3 * sh::VOXEL_CHANNELS * 4},
-        {"static flags", "R8_UINT", n3},
-        {"voxel direct light", "R16G16B16A16_SFLOAT", n3 * 8},
+        {"voxel slot index", "uint32 buffer", n3 * 4},
+        {"voxel attributes (13 channels per slot)", "R32_SFLOAT", uint64_t(slots) * sh::VOXEL_CHANNELS * 4},
+        {"voxel direct light (per slot)", "R16G16B16A16_SFLOAT", uint64_t(slots) * 8},
         {"radiance", "R16G16B16A16_SFLOAT", n3 * 8},
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
-        {"occupied-voxel list", "uint32 buffer", voxelListBytes(n)},
+        {"occupied-voxel list", "uint32 buffer", voxelListBytes(slots)},
     };
 }
 
-double voxelBytesPerGridVoxel(uint32_t n) {
+double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots) {
     uint64_t total = 0;
-    for (const VolumeMemory& m : volumeMemory(n)) total += m.bytes;
+    for (const VolumeMemory& m : volumeMemory(n, slots)) total += m.bytes;
     return double(total) / (double(n) * n * n);
 }
 
-VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g), directionalMips(directionalMipCount(g.n)) {
+VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t slotCount)
+    : grid(g),
+      directionalMips(directionalMipCount(g.n)),
+      slots(roundSlotCapacity(g.n, slotCount ? slotCount : defaultSlotCapacity(g.n))) {
     const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
     if (g.n < 8 || (g.n & (g.n - 1)) != 0)
         throw std::runtime_error("voxels: " + std::to_string(g.n) + " is not a power of two of at least 8");
-    if (uint64_t(g.n) * sh::VOXEL_CHANNELS > limits.maxImageDimension3D)
-        throw std::runtime_error("voxels: " + std::to_string(g.n) + "^3 needs 3D images of depth " +
-                                 std::to_string(g.n * sh::VOXEL_CHANNELS) + " but " + ctx.deviceName +
-                                 " allows " + std::to_string(limits.maxImageDimension3D));
+    if (g.n > limits.maxImageDimension3D || sh::VOXEL_SLOT_ROW > limits.maxImageDimension3D ||
+        slots / sh::VOXEL_SLOT_ROW > limits.maxImageDimension3D)
+        throw std::runtime_error("voxels: " + std::to_string(g.n) + "^3 with " + std::to_string(slots) +
+                                 " voxel slots needs 3D images of " + std::to_string(sh::VOXEL_SLOT_ROW) + " x " +
+                                 std::to_string(slots / sh::VOXEL_SLOT_ROW) + " texels, but " + ctx.deviceName +
+                                 " allows " + std::to_string(limits.maxImageDimension3D) + " per side");
     if (!ctx.features.atomicFloat)
         throw std::runtime_error(ctx.deviceName + " lacks shaderImageFloat32AtomicAdd, which voxelization needs");
 
@@ -81,43 +95,50 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g)
                                       VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     gpu::ImageDesc d;
     d.type = VK_IMAGE_TYPE_3D;
+    const uint32_t rows = slots / sh::VOXEL_SLOT_ROW;
     d.format = VK_FORMAT_R32_SFLOAT;
-    d.extent = {g.n, g.n, g.n * sh::VOXEL_CHANNELS};
+    d.extent = {sh::VOXEL_SLOT_ROW, rows, sh::VOXEL_CHANNELS};
     d.usage = storage;
     d.name = "voxel attributes";
     accum = gpu::Image(ctx, d);
-    d.format = VK_FORMAT_R8_UINT;
+    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    d.extent = {sh::VOXEL_SLOT_ROW, rows, 1};
+    d.name = "voxel direct light";
+    direct = gpu::Image(ctx, d);
     d.extent = {g.n, g.n, g.n};
-    d.name = "voxel static flags";
-    flags = gpu::Image(ctx, d);
     d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
     d.name = "voxel radiance";
     radiance = gpu::Image(ctx, d);
-    d.usage = storage;
-    d.name = "voxel direct light";
-    direct = gpu::Image(ctx, d);
     d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
     d.extent = {g.n / 2, g.n / 2, g.n / 2};
     d.mipLevels = directionalMips;
     d.name = "directional volume";
     for (gpu::Image& v : directional) v = gpu::Image(ctx, d);
 
-    const sh::VoxelGrid gpuGrid{glm::vec4(g.origin, g.voxelSize), glm::uvec4(g.n, sh::VOXEL_CHANNELS, directionalMips, 0)};
+    const sh::VoxelGrid gpuGrid{glm::vec4(g.origin, g.voxelSize), glm::uvec4(g.n, sh::VOXEL_CHANNELS, directionalMips, slots)};
     gridBuffer = gpu::createBuffer(ctx, &gpuGrid, sizeof(gpuGrid), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "voxel grid");
 
-    list = gpu::Buffer(ctx, voxelListBytes(g.n),
+    list = gpu::Buffer(ctx, voxelListBytes(slots),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                        gpu::MemoryUse::Device, "occupied-voxel list");
+    index = gpu::Buffer(ctx, uint64_t(g.n) * g.n * g.n * sizeof(uint32_t),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                        gpu::MemoryUse::Device, "voxel slot index");
 
     // Everything starts zeroed and stays in GENERAL from here on; the list
     // starts empty with its capacity written once.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         sh::VoxelListHeader header{};
-        header.counts.z = g.n * g.n * g.n;
+        header.counts.z = slots;
         header.allGroups.z = header.dynamicGroups.z = 1;
         vkCmdUpdateBuffer(cmd, list.handle(), 0, sizeof(header), &header);
+        vkCmdFillBuffer(cmd, index.handle(), 0, VK_WHOLE_SIZE, 0);
+        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+                           VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
         const VkClearColorValue zero{};
         for (const gpu::Image* img : all()) {
             gpu::transition(cmd, *img, gpu::use::Undefined, gpu::use::TransferDst);
@@ -129,7 +150,7 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g) : grid(g)
 }
 
 std::vector<const gpu::Image*> VoxelVolumes::all() const {
-    std::vector<const gpu::Image*> images = {&accum, &flags, &direct, &radiance};
+    std::vector<const gpu::Image*> images = {&accum, &direct, &radiance};
     for (const gpu::Image& v : directional) images.push_back(&v);
     return images;
 }

@@ -28,33 +28,45 @@ GridSpec gridForBox(const glm::vec3& boxMin, const glm::vec3& boxMax, uint32_t n
 
 uint32_t directionalMipCount(uint32_t n);  // (N/2)^3 down to 1^3
 
+// Slots (occupied voxels that can be stored) an N^3 grid starts with: 16 N^2
+// (a surface crosses about N^2 voxels per unit of area; measured occupancy is
+// 3-11 % of N^3 at 32^3-128^3), whole rows, at most N^3. The renderer grows the
+// storage when a voxelization runs out (Renderer::renderFrame).
+uint32_t defaultSlotCapacity(uint32_t n);
+// `wanted` rounded up to whole rows of VOXEL_SLOT_ROW, at most N^3 rounded up.
+uint32_t roundSlotCapacity(uint32_t n, uint64_t wanted);
+
 struct VolumeMemory {
     std::string name;
     std::string format;
     uint64_t bytes;
 };
-// What the volumes of an N^3 grid take, before allocating anything.
-std::vector<VolumeMemory> volumeMemory(uint32_t n);
+// What the volumes of an N^3 grid with `slots` slots take, before allocating anything.
+std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots);
 // Their sum over N^3: the figure issue #14's compact-storage goal is stated in.
-double voxelBytesPerGridVoxel(uint32_t n);
+double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots);
 
 class VoxelVolumes {
 public:
-    VoxelVolumes(const gpu::Context& ctx, const GridSpec& grid);
+    // slots: 0 = defaultSlotCapacity(grid.n); rounded with roundSlotCapacity.
+    VoxelVolumes(const gpu::Context& ctx, const GridSpec& grid, uint32_t slots = 0);
 
     GridSpec grid;
     uint32_t directionalMips;
-    gpu::Image accum;     // R32_SFLOAT, N x N x (VOXEL_CHANNELS * N): summed attributes
-    gpu::Image flags;     // R8_UINT, N^3: VOXEL_FLAG_STATIC where static geometry wrote
-    gpu::Image direct;    // RGBA16F, N^3: direct light + emission, kept for the bounces
+    uint32_t slots;       // slot capacity (whole rows of VOXEL_SLOT_ROW)
+    gpu::Image accum;     // R32_SFLOAT, ROW x rows x VOXEL_CHANNELS: summed attributes per slot
+    gpu::Image direct;    // RGBA16F, ROW x rows x 1: direct light + emission per slot, kept for the bounces
     gpu::Image radiance;  // RGBA16F, N^3: direct light + emission (+ bounces), a = opacity
     std::array<gpu::Image, 6> directional;  // RGBA16F, (N/2)^3 + mips; order -X +X -Y +Y -Z +Z
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid
-    // The occupied-voxel list (shared/voxel_list_pass.h): header, then up to
-    // N^3 packed coordinates. Storage, indirect-dispatch arguments, fills.
+    // uint32 per grid voxel (x fastest): slot + 1 | VOXEL_INDEX_STATIC, 0 = empty.
+    gpu::Buffer index;
+    // The occupied-voxel list (shared/voxel_list_pass.h): header, then one
+    // packed coordinate per slot. Storage, indirect-dispatch arguments, fills.
     gpu::Buffer list;
-    // Every volume, for code that handles them all alike. They start zeroed,
-    // in gpu::use::ComputeReadWrite.
+    double bytesPerGridVoxel() const { return voxelBytesPerGridVoxel(grid.n, slots); }
+    // Every volume (image), for code that handles them all alike. They start
+    // zeroed, in gpu::use::ComputeReadWrite; so does the index.
     std::vector<const gpu::Image*> all() const;
 };
 

@@ -19,21 +19,19 @@ const uint32_t kList[] = {
 #include "shaders/voxel_list.comp.inc"
 };
 
-// Groups of an over-the-list dispatch laid out as rows (see VOXEL_LIST_ROW).
-void dispatchRows(VkCommandBuffer cmd, uint64_t invocations) {
-    const uint64_t groups = (invocations + sh::VOXEL_LIST_GROUP - 1) / sh::VOXEL_LIST_GROUP;
-    const uint64_t x = groups < sh::VOXEL_LIST_ROW ? groups : sh::VOXEL_LIST_ROW;
-    if (x == 0) return;
-    vkCmdDispatch(cmd, uint32_t(x), uint32_t((groups + x - 1) / x), 1);
-}
-
 }  // namespace
 
-uint64_t voxelListBytes(uint32_t n) { return sizeof(sh::VoxelListHeader) + uint64_t(n) * n * n * sizeof(uint32_t); }
+uint64_t voxelListBytes(uint32_t slots) { return sizeof(sh::VoxelListHeader) + uint64_t(slots) * sizeof(uint32_t); }
 
-uint32_t voxelListMaxGroups(uint32_t n) {
-    const uint64_t groups = (uint64_t(n) * n * n + sh::VOXEL_LIST_GROUP - 1) / sh::VOXEL_LIST_GROUP;
+uint32_t voxelListMaxGroups(uint32_t slots) {
+    const uint64_t groups = (uint64_t(slots) + sh::VOXEL_LIST_GROUP - 1) / sh::VOXEL_LIST_GROUP;
     return uint32_t(groups + sh::VOXEL_LIST_ROW);  // the last row may be partly past the end
+}
+
+glm::uvec3 voxelListDispatch(uint32_t entries) {
+    const uint32_t groups = (entries + sh::VOXEL_LIST_GROUP - 1) / sh::VOXEL_LIST_GROUP;
+    const uint32_t x = groups < sh::VOXEL_LIST_ROW ? groups : sh::VOXEL_LIST_ROW;
+    return {x, x == 0 ? 0 : (groups + x - 1) / x, 1};
 }
 
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset) {
@@ -44,8 +42,7 @@ VoxelListPass::VoxelListPass(const gpu::Context& ctx) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
     layout.bindings = {{sh::BIND_LIST_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                       {sh::BIND_LIST_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                       {sh::BIND_LIST_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_LIST_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelListPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kList), layout, "voxel list");
@@ -60,36 +57,33 @@ void VoxelListPass::reset(VkCommandBuffer cmd, gpu::Tracker& tracker, const Voxe
                     sizeof(sh::VoxelListHeader) - capacity - sizeof(uint32_t), 0);
 }
 
-void VoxelListPass::run(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, uint32_t mode,
-                        uint32_t invocations) const {
-    // The shader reads the attributes only to scan, but binds them always, and
-    // validation checks what a pipeline may access.
-    tracker.buffer(v.list, gpu::use::BufferComputeReadWrite).image(v.accum, gpu::use::ComputeRead).flush(cmd);
+void VoxelListPass::run(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, uint32_t mode) const {
+    tracker.buffer(v.list, gpu::use::BufferComputeReadWrite).flush(cmd);
     gpu::bind(cmd, pipeline_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_LIST_GRID, v.gridBuffer.handle())
         .storageBuffer(sh::BIND_LIST_BUFFER, v.list.handle())
-        .storageImage(sh::BIND_LIST_ACCUM, v.accum.view())
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelListPush push{glm::uvec4(mode, 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    dispatchRows(cmd, invocations);
+    vkCmdDispatch(cmd, 1, 1, 1);
 }
 
 void VoxelListPass::finish(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                            bool staticVoxels) const {
-    run(cmd, tracker, v, staticVoxels ? sh::LIST_FINISH_STATIC : sh::LIST_FINISH, 1);
+    run(cmd, tracker, v, staticVoxels ? sh::LIST_FINISH_STATIC : sh::LIST_FINISH);
+}
+
+void VoxelListPass::copyHeader(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                               const gpu::Buffer& hostBuffer) const {
+    tracker.buffer(v.list, gpu::use::BufferTransferRead).buffer(hostBuffer, gpu::use::BufferTransferWrite).flush(cmd);
+    const VkBufferCopy region{0, 0, sizeof(sh::VoxelListHeader)};
+    vkCmdCopyBuffer(cmd, v.list.handle(), hostBuffer.handle(), 1, &region);
+    tracker.buffer(hostBuffer, gpu::use::HostRead).flush(cmd);
 }
 
 void VoxelListPass::dropDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
-    run(cmd, tracker, v, sh::LIST_DROP_DYNAMIC, 1);
-}
-
-void VoxelListPass::rebuild(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
-    reset(cmd, tracker, v);
-    const uint64_t n = v.grid.n;
-    run(cmd, tracker, v, sh::LIST_SCAN, uint32_t(n * n * n));
-    finish(cmd, tracker, v, true);
+    run(cmd, tracker, v, sh::LIST_DROP_DYNAMIC);
 }
 
 }  // namespace dvsgi::vxgi

@@ -1,11 +1,11 @@
 // The occupied-voxel list's bookkeeping (shaders/shared/voxel_list_pass.h):
 // reset, finishing after a voxelization (counts and the indirect dispatch
-// arguments the per-voxel passes use), dropping the dynamic entries, and
-// rebuilding it from the attribute volume for code that wrote the attributes
-// itself (an upload).
+// arguments the per-voxel passes use) and dropping the dynamic entries.
 #pragma once
 
 #include <cstdint>
+
+#include <glm/glm.hpp>
 
 #include "gpu/pipeline.h"
 
@@ -29,12 +29,14 @@ public:
     void finish(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, bool staticVoxels) const;
     // Forgets the dynamic entries (after the dynamic clear zeroed their voxels).
     void dropDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
-    // Rebuilds the list from the attribute volume's fragment counts, all as static.
-    void rebuild(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
+    // Copies the header (shader::VoxelListHeader) into a host-readable buffer,
+    // readable once the command buffer completed: how the host learns that a
+    // voxelization ran out of slots (counts.w > 0).
+    void copyHeader(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
+                    const gpu::Buffer& hostBuffer) const;
 
 private:
-    void run(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, uint32_t mode,
-             uint32_t invocations) const;
+    void run(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, uint32_t mode) const;
 
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
@@ -43,9 +45,11 @@ private:
 // Recorded by each pass that runs over list entries: the indirect dispatch
 // whose arguments sit at `argsOffset` in the list buffer.
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset);
-// The list buffer's size for an N^3 grid (header + one entry per voxel).
-uint64_t voxelListBytes(uint32_t n);
-// Per-workgroup statistics slots that a pass over the list may address.
-uint32_t voxelListMaxGroups(uint32_t n);
+// The list buffer's size for `slots` slots (header + one entry per slot).
+uint64_t voxelListBytes(uint32_t slots);
+// Per-workgroup statistics entries that a pass over a list of `slots` entries may address.
+uint32_t voxelListMaxGroups(uint32_t slots);
+// The indirect dispatch arguments (x, y, z) over `entries` list entries.
+glm::uvec3 voxelListDispatch(uint32_t entries);
 
 }  // namespace dvsgi::vxgi

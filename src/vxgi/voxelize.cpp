@@ -75,7 +75,8 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
                             {sh::BIND_CLEAR_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                             {sh::BIND_CLEAR_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                             {sh::BIND_CLEAR_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                            {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                            {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                            {sh::BIND_CLEAR_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
     if (resolveVoxelizer(ctx, kind) == VoxelizerKind::Compute) {
         hardware_ = false;
@@ -97,7 +98,7 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
                        {sh::BIND_VOX_DRAWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_VERTEX_BIT},
                        {sh::BIND_VOX_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
                        {sh::BIND_VOX_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
-                       {sh::BIND_VOX_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
+                       {sh::BIND_VOX_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
                        {sh::BIND_VOX_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::VoxelizePush);
@@ -112,9 +113,10 @@ void Voxelizer::clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const Voxel
     gpu::GpuTimerScope timer(timers, cmd, "clear all voxels");
     // Direct light and radiance too: the per-voxel passes write only occupied
     // voxels, so voxels the new static geometry leaves empty must read zero.
-    const gpu::Image* cleared[] = {&v.accum, &v.flags, &v.direct, &v.radiance};
+    const gpu::Image* cleared[] = {&v.accum, &v.direct, &v.radiance};
     for (const gpu::Image* img : cleared) tracker.image(*img, gpu::use::ClearGeneral, true);
-    tracker.flush(cmd);
+    tracker.buffer(v.index, gpu::use::BufferTransferWrite).flush(cmd);
+    vkCmdFillBuffer(cmd, v.index.handle(), 0, VK_WHOLE_SIZE, 0);
     const VkClearColorValue zero{};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     for (const gpu::Image* img : cleared)
@@ -127,6 +129,7 @@ void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
     tracker.image(v.accum, gpu::use::ComputeWrite)
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)
+        .buffer(v.index, gpu::use::BufferComputeWrite)
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .flush(cmd);
     gpu::bind(cmd, clear_);
@@ -136,6 +139,7 @@ void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
         .storageBuffer(sh::BIND_CLEAR_LIST, v.list.handle())
         .storageImage(sh::BIND_CLEAR_DIRECT, v.direct.view())
         .storageImage(sh::BIND_CLEAR_RADIANCE, v.radiance.view())
+        .storageBuffer(sh::BIND_CLEAR_INDEX, v.index.handle())
         .push(ctx_, cmd, clear_);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, dynamicGroups));
 }
@@ -149,7 +153,7 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpusc
         return;
     }
     tracker.image(v.accum, gpu::use::VoxelizeReadWrite)
-        .image(v.flags, gpu::use::VoxelizeReadWrite)
+        .buffer(v.index, gpu::use::FragmentReadWrite)
         .buffer(v.list, gpu::use::FragmentReadWrite)
         .flush(cmd);
     voxelizeRaster(cmd, scene, v, dynamic);
@@ -169,7 +173,7 @@ void Voxelizer::voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& sc
         .storageBuffer(sh::BIND_VOX_DRAWS, scene.draws.handle())
         .storageBuffer(sh::BIND_VOX_MATERIALS, scene.materials.handle())
         .storageImage(sh::BIND_VOX_ACCUM, v.accum.view())
-        .storageImage(sh::BIND_VOX_FLAGS, v.flags.view())
+        .storageBuffer(sh::BIND_VOX_INDEX, v.index.handle())
         .storageBuffer(sh::BIND_VOX_LIST, v.list.handle())
         .push(ctx_, cmd, voxelize_);
     scene.bindGeometry(cmd, voxelize_.layout());

@@ -46,12 +46,12 @@ public:
     Voxelizer(const Voxelizer&) = delete;
     Voxelizer& operator=(const Voxelizer&) = delete;
 
-    // Zeroes attributes, flags, direct light and radiance: the start of a
+    // Zeroes index, attributes, direct light and radiance: the start of a
     // static re-voxelization (the occupied-voxel list is reset beside it).
     void clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                   gpu::GpuTimers* timers) const;
-    // Zeroes the voxels of the list's dynamic entries (what dynamic geometry
-    // wrote last frame); VoxelListPass::dropDynamic then forgets them.
+    // Zeroes the voxels and slots of the list's dynamic entries (what dynamic
+    // geometry wrote last frame); VoxelListPass::dropDynamic then frees them.
     void clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                       gpu::GpuTimers* timers) const;
     // Voxelizes the static or the dynamic draws of the scene, appending newly

@@ -52,7 +52,7 @@ ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::Scen
                        {sh::BIND_VOXC_DRAWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_VOXC_FLAGS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_VOXC_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_GROUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
@@ -97,7 +97,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     vkCmdUpdateBuffer(cmd, indirect_.handle(), 0, sizeof(reset), reset);
 
     tracker.image(v.accum, gpu::use::ComputeReadWrite)
-        .image(v.flags, gpu::use::ComputeReadWrite)
+        .buffer(v.index, gpu::use::BufferComputeReadWrite)
         .buffer(indirect_, compute, readWrite)
         .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)
@@ -108,7 +108,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .storageBuffer(sh::BIND_VOXC_DRAWS, scene.draws.handle())
         .storageBuffer(sh::BIND_VOXC_MATERIALS, scene.materials.handle())
         .storageImage(sh::BIND_VOXC_ACCUM, v.accum.view())
-        .storageImage(sh::BIND_VOXC_FLAGS, v.flags.view())
+        .storageBuffer(sh::BIND_VOXC_INDEX, v.index.handle())
         .storageBuffer(sh::BIND_VOXC_VERTICES, scene.vertices.handle())
         .storageBuffer(sh::BIND_VOXC_INDICES, scene.indices.handle())
         .storageBuffer(sh::BIND_VOXC_GROUPS, groups_.handle())
@@ -130,7 +130,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     // The tiles the triangle phase queued; its atomics and the tile phase's
     // commute, but two dispatches writing the volumes still need the barrier.
     tracker.image(v.accum, gpu::use::ComputeReadWrite)
-        .image(v.flags, gpu::use::ComputeReadWrite)
+        .buffer(v.index, gpu::use::BufferComputeReadWrite)
         .buffer(indirect_, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT)
         .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)

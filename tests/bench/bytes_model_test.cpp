@@ -8,12 +8,13 @@
 namespace dvsgi::bench {
 namespace {
 
-// 32^3, 1000 occupied voxels of which 100 dynamic, 160x90 without
+// 32^3 with 16384 voxel slots, 1000 occupied voxels of which 100 dynamic, 160x90 without
 // supersampling or reduced tracing, one 512^2 shadow view, 1000 static and
 // 500 dynamic geometry bytes, one bounce.
 ModelInputs handCase() {
     ModelInputs in;
     in.voxels = 32;
+    in.slots = 16384;
     in.occupiedVoxels = 1000;
     in.dynamicVoxels = 100;
     in.outputWidth = in.internalWidth = in.traceWidth = 160;
@@ -36,15 +37,17 @@ void expectPass(const std::vector<PassTraffic>& passes, const char* name, uint64
 
 TEST(BytesModel, HandComputedCase) {
     const std::vector<PassTraffic> p = passTraffic(handCase());
-    // 32^3 = 32768 voxels; 52 attribute bytes (13 x R32F) + 1 flag byte + direct
-    // light and radiance (RGBA16F) each.
-    expectPass(p, "clear all voxels", 0, 32768 * (53 + 16));
-    // 900 static voxels; 100 dynamic ones; 4-byte list entries.
-    expectPass(p, "voxelize static", 1000, 900 * (53 + 4));
-    expectPass(p, "clear dynamic voxels", 100 * 4, 100 * (52 + 16));
-    expectPass(p, "voxelize dynamic", 500 + 100, 100 * (52 + 4));
+    // 32^3 = 32768 voxels with a 4-byte index and RGBA16F radiance each;
+    // 16384 slots with 52 attribute bytes (13 x R32F) and RGBA16F direct light each.
+    expectPass(p, "clear all voxels", 0, 32768 * (4 + 8) + 16384 * (52 + 8));
+    // 900 static voxels; 100 dynamic ones; attributes, index and a 4-byte list entry each.
+    expectPass(p, "voxelize static", 1000, 900 * (52 + 4 + 4));
+    // Attributes, direct light, radiance and index of last frame's dynamic voxels.
+    expectPass(p, "clear dynamic voxels", 100 * 4, 100 * (52 + 8 + 8 + 4));
+    expectPass(p, "voxelize dynamic", 500 + 100 * 4, 100 * (52 + 4 + 4));
     expectPass(p, "shadow maps", 1500, 512 * 512 * 4);
-    expectPass(p, "voxel direct light", 1000 * (4 + 52), 1000 * 8);
+    // Direct light into the slot and the radiance volume.
+    expectPass(p, "voxel direct light", 1000 * (4 + 52), 1000 * 16);
     // Directional levels 16^3 .. 1^3 (5 levels), RGBA16F, 6 volumes: reads
     // 32^3 radiance + levels 16^3..2^3, writes all five levels.
     const uint64_t filterRead = 32768 * 8 + 6 * 8 * (4096 + 512 + 64 + 8);
@@ -84,11 +87,12 @@ TEST(BytesModel, DenseVoxelPassesMatchTheVolumeSizes) {
     for (uint32_t n : {16u, 64u, 256u}) {
         ModelInputs in = handCase();
         in.voxels = n;
+        in.slots = vxgi::defaultSlotCapacity(n);
         const std::vector<PassTraffic> p = passTraffic(in);
         uint64_t cleared = 0, directional = 0;
-        for (const vxgi::VolumeMemory& v : vxgi::volumeMemory(n)) {
-            if (v.name.starts_with("voxel attributes") || v.name == "static flags" || v.name == "voxel direct light" ||
-                v.name == "radiance")
+        for (const vxgi::VolumeMemory& v : vxgi::volumeMemory(n, in.slots)) {
+            if (v.name.starts_with("voxel attributes") || v.name == "voxel slot index" ||
+                v.name.starts_with("voxel direct light") || v.name == "radiance")
                 cleared += v.bytes;
             if (v.name.starts_with("directional")) directional = v.bytes;
         }

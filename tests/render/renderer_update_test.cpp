@@ -9,6 +9,7 @@
 #include "scene/load.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 namespace {
@@ -18,11 +19,9 @@ namespace sh = dvsgi::shader;
 // Voxel counts (channel CH_COUNT) of the renderer's grid.
 std::vector<float> counts(const render::Renderer& r) {
     const vxgi::VoxelVolumes& v = *r.volumes();
-    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), v.accum, gpu::use::ComputeReadWrite);
+    const vxgi::DenseAttributes a = vxgi::readAttributes(context(), v);
     const size_t n3 = size_t(v.grid.n) * v.grid.n * v.grid.n;
-    std::vector<float> c(n3);
-    std::memcpy(c.data(), bytes.data() + n3 * sh::CH_COUNT * sizeof(float), n3 * sizeof(float));
-    return c;
+    return std::vector<float>(a.data.begin() + n3 * sh::CH_COUNT, a.data.begin() + n3 * (sh::CH_COUNT + 1));
 }
 
 // Occupied voxels' mean position along x, in voxels.

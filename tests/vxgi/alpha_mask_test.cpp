@@ -7,6 +7,7 @@
 #include "shared/voxel_data.h"
 #include "vox_helper.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 namespace {
@@ -41,10 +42,9 @@ TEST_P(AlphaMask, CutOutHalfLeavesNoVoxels) {
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     const vxgi::VoxelVolumes& v = *r.volumes();
-    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), v.accum, gpu::use::ComputeReadWrite);
+    const vxgi::DenseAttributes a = vxgi::readAttributes(context(), v);
     const size_t n = 32, n3 = n * n * n;
-    std::vector<float> count(n3);
-    std::memcpy(count.data(), bytes.data() + n3 * sh::CH_COUNT * sizeof(float), n3 * sizeof(float));
+    const std::vector<float> count(a.data.begin() + n3 * sh::CH_COUNT, a.data.begin() + n3 * (sh::CH_COUNT + 1));
     // Columns away from the cut at x = 16 (the texture blends across it).
     int left = 0, right = 0;
     for (size_t i = 0; i < n3; ++i) {

@@ -3,12 +3,14 @@
 // of light one bounce carries; with rho = 0.9 ten bounces still leave a third
 // of the light missing, so this checks that iterating to convergence reaches
 // the infinite series. A light switched off must leave no lasting indirect
-// light under feedback.
+// light under feedback. A renderer whose voxel slots run out grows them and
+// renders the same frame.
 #include <cmath>
 #include <cstdio>
 
 #include "gpu_fixture.h"
 #include "light_helpers.h"
+#include "shared/voxel_data.h"
 #include "vxgi/voxel_light_settings.h"
 
 namespace dvsgi::test {
@@ -84,7 +86,7 @@ TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
     // Feedback: frame k holds k - 1 bounces; 20 frames are converged for rho = 0.5.
     for (int f = 0; f < 20; ++f) r.renderFrame();
     const double lit = wallMean(readRgba16(r.volumes()->radiance));
-    const double indirect = lit - wallMean(readRgba16(r.volumes()->direct));
+    const double indirect = lit - wallMean(readDirect(*r.volumes()));
     ASSERT_GT(indirect, 0.05 * lit);
     r.scene().lights[0].intensity = 0.0f;
     r.sceneChanged();
@@ -101,6 +103,32 @@ TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
     std::printf("  indirect %.5f with the light on; below 1 %% after %d frame(s) off (%.2e left)\n", indirect, frames,
                 left);
     EXPECT_LT(left, 0.01 * indirect) << "after " << kFrames << " frames";
+}
+
+TEST_F(Converge, RunningOutOfVoxelSlotsGrowsThemAndRendersTheSameFrame) {
+    scene::Scene s;
+    // Walls 29 voxels wide: about 5000 occupied voxels, more than one row of slots.
+    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), 0.9f);
+    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    render::RenderSettings rs = boxSettings();
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 2;
+    render::Renderer ref(context(), s, rs);
+    ref.renderFrame();
+    rs.voxelSlots = shader::VOXEL_SLOT_ROW;
+    render::Renderer grown(context(), s, rs);
+    grown.renderFrame();
+    const uint32_t slots = grown.volumes()->slots;
+    std::printf("  %u slots at first, %u after growing (default %u)\n", shader::VOXEL_SLOT_ROW, slots,
+                ref.volumes()->slots);
+    EXPECT_GT(slots, shader::VOXEL_SLOT_ROW);
+    grown.renderFrame();  // a later frame (dynamic path) needs no more
+    EXPECT_EQ(grown.volumes()->slots, slots);
+    const Rgba16Volume a = readRgba16(ref.volumes()->radiance), b = readRgba16(grown.volumes()->radiance);
+    EXPECT_NEAR(wallMean(b), wallMean(a), 1e-4 * wallMean(a));
+    const image::ImageRGBA32F ia = ref.readOutput(), ib = grown.readOutput();
+    ASSERT_EQ(ia.rgba.size(), ib.rgba.size());
+    for (size_t i = 0; i < ia.rgba.size(); ++i) ASSERT_NEAR(ib.rgba[i], ia.rgba[i], 1e-4f * (1.0f + ia.rgba[i])) << i;
 }
 
 }  // namespace

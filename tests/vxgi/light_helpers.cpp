@@ -40,20 +40,17 @@ void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume) {
 }
 
 void uploadAccum(const vxgi::VoxelVolumes& volumes, const AccumVolume& accum) {
-    gpu::uploadImage(context(), volumes.accum, accum.data.data(), accum.data.size() * sizeof(float),
-                     gpu::use::ComputeReadWrite);
-    // The per-voxel passes run over the occupied-voxel list: rebuild it from the counts.
-    const vxgi::VoxelListPass list(context());
-    gpu::Tracker tracker = volumeTracker(volumes);
-    context().submitAndWait([&](VkCommandBuffer cmd) { list.rebuild(cmd, tracker, volumes); });
+    // Slots, index and the occupied-voxel list the per-voxel passes run over.
+    vxgi::uploadAttributes(context(), volumes, accum);
 }
 
-AccumVolume readAccum(const vxgi::VoxelVolumes& volumes) {
-    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), volumes.accum, gpu::use::ComputeReadWrite);
-    AccumVolume a(volumes.grid.n);
-    EXPECT_EQ(bytes.size(), a.data.size() * sizeof(float));
-    std::memcpy(a.data.data(), bytes.data(), a.data.size() * sizeof(float));
-    return a;
+AccumVolume readAccum(const vxgi::VoxelVolumes& volumes) { return vxgi::readAttributes(context(), volumes); }
+
+Rgba16Volume readDirect(const vxgi::VoxelVolumes& volumes) {
+    Rgba16Volume out;
+    out.n = volumes.grid.n;
+    out.texels = vxgi::readDirectLight(context(), volumes);
+    return out;
 }
 
 UnusedShadowMap::UnusedShadowMap() {

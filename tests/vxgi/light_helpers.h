@@ -13,6 +13,7 @@
 #include "scene/scene.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 
@@ -37,21 +38,15 @@ Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip = 0);
 // Writes mip 0 of an RGBA16F 3D image (values rounded to fp16), leaving it in GENERAL.
 void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume);
 
-// The accum volume's layout on the host: slab c of N^3 floats at z + c*N.
-struct AccumVolume {
-    explicit AccumVolume(uint32_t n) : n(n), data(size_t(n) * n * n * shader::VOXEL_CHANNELS, 0.0f) {}
-    float& at(int x, int y, int z, uint32_t channel) {
-        return data[voxelIndex(n, x, y, z + int(channel * n))];
-    }
-    float at(int x, int y, int z, uint32_t channel) const {
-        return data[voxelIndex(n, x, y, z + int(channel * n))];
-    }
-    uint32_t n;
-    std::vector<float> data;
-};
+// The attribute sums on the host in the dense grid layout: slab c of N^3
+// floats at z + c*N (vxgi/voxel_storage_io.h converts to and from slots).
+using AccumVolume = vxgi::DenseAttributes;
 
+// Gives every voxel with a count a static slot (and list entry) and uploads its sums.
 void uploadAccum(const vxgi::VoxelVolumes& volumes, const AccumVolume& accum);
 AccumVolume readAccum(const vxgi::VoxelVolumes& volumes);
+// The per-slot direct light per grid voxel (empty voxels zero).
+Rgba16Volume readDirect(const vxgi::VoxelVolumes& volumes);
 
 // Inject's shadow-map binding must be valid even when no light samples it.
 struct UnusedShadowMap {

@@ -4,6 +4,7 @@
 
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 
@@ -17,13 +18,11 @@ VoxelSet VoxelReadback::occupancy() const {
 }
 
 VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes) {
-    // The volumes live in GENERAL and are last written by compute or fragment
-    // shaders; the voxelizer's closing barrier already covers transfers.
-    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), volumes.accum, gpu::use::ComputeReadWrite);
+    // The per-slot sums scattered back to the grid through the index.
+    vxgi::DenseAttributes dense = vxgi::readAttributes(context(), volumes);
     VoxelReadback r;
-    r.n = volumes.grid.n;
-    r.data.resize(bytes.size() / sizeof(float));
-    std::memcpy(r.data.data(), bytes.data(), r.data.size() * sizeof(float));
+    r.n = dense.n;
+    r.data = std::move(dense.data);
     return r;
 }
 
@@ -31,11 +30,11 @@ std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind
     return vxgi::voxelizerName(info.param);
 }
 
-VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid, vxgi::VoxelizerKind kind)
+VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid, vxgi::VoxelizerKind kind, uint32_t slots)
     : sceneGpu(context(), scene),
       voxelizer(context(), sceneGpu, false, kind),
       list(context()),
-      volumes(context(), grid),
+      volumes(context(), grid, slots),
       tracker(volumeTracker(volumes)) {}
 
 void VoxelRig::fullVoxelize() {

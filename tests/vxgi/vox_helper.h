@@ -20,7 +20,7 @@
 
 namespace dvsgi::test {
 
-// The accum volume read back: 13 slabs of N^3 floats stacked along z.
+// The attribute sums read back per grid voxel: 13 slabs of N^3 floats stacked along z.
 struct VoxelReadback {
     uint32_t n = 0;
     std::vector<float> data;
@@ -43,8 +43,9 @@ std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind
 // A scene, its GPU copy, a voxelizer (geometry-shader dilation or compute)
 // and volumes for one grid: what the dynamic tests drive frame by frame.
 struct VoxelRig {
+    // slots: the voxel slot capacity (0 = vxgi::defaultSlotCapacity).
     VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid,
-             vxgi::VoxelizerKind kind = vxgi::VoxelizerKind::Geometry);
+             vxgi::VoxelizerKind kind = vxgi::VoxelizerKind::Geometry, uint32_t slots = 0);
     void fullVoxelize();       // clearAll + static + dynamic, as after a load (with the list)
     void dynamicFrame();       // clearDynamic + dynamic, as the Renderer's later frames
     void updateTransforms(const scene::Scene& scene);  // after moving nodes

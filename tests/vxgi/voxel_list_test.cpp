@@ -1,7 +1,9 @@
-// The occupied-voxel list against the attribute volume it indexes: every
-// occupied voxel once, static entries first, dispatch arguments that cover
-// exactly the entries, and a dynamic clear that empties what dynamic
-// geometry left (attributes, direct light and radiance).
+// The occupied-voxel list and the slot index against the attributes they
+// address: every occupied voxel once, static entries first, each voxel's index
+// naming its own entry (its slot) with the static bit where static geometry
+// claimed it, dispatch arguments that cover exactly the entries, and a dynamic
+// clear that empties what dynamic geometry left (attributes, direct light,
+// radiance, index).
 #include <algorithm>
 #include <cstring>
 #include <set>
@@ -12,6 +14,7 @@
 #include "gpu_fixture.h"
 #include "shared/voxel_list_pass.h"
 #include "vox_helper.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 namespace {
@@ -68,6 +71,24 @@ void expectListMatches(const ListReadback& list, const VoxelSet& occupied, const
     EXPECT_EQ(glm::uvec3(list.header.dynamicGroups), dyn);
 }
 
+// Voxel v's index holds slot + 1 of its list entry, static where the entry
+// is; every other voxel's index is 0.
+void expectIndexMatches(const vxgi::VoxelVolumes& volumes, const ListReadback& list) {
+    const std::vector<uint32_t> index = vxgi::readVoxelIndex(context(), volumes);
+    const uint32_t n = volumes.grid.n;
+    std::vector<bool> listed(index.size(), false);
+    for (size_t i = 0; i < list.entries.size(); ++i) {
+        const glm::ivec3 v = list.entries[i];
+        const size_t at = (size_t(v.z) * n + size_t(v.y)) * n + size_t(v.x);
+        listed[at] = true;
+        const uint32_t want = uint32_t(i + 1) | (i < list.header.counts.y ? sh::VOXEL_INDEX_STATIC : 0u);
+        EXPECT_EQ(index[at], want) << "entry " << i;
+    }
+    size_t stray = 0;
+    for (size_t i = 0; i < index.size(); ++i) stray += !listed[i] && index[i] != 0;
+    EXPECT_EQ(stray, 0u) << "voxels with an index but no entry";
+}
+
 void addStatic(scene::Scene& s) {
     addRect(s, addMaterial(s, glm::vec3(0.8f, 0.7f, 0.6f)), {4, 2.5f, 4}, {28, 2.5f, 28}, 1, 1.0f);
     addBox(s, addMaterial(s, glm::vec3(0.1f, 0.9f, 0.2f)), glm::vec3(1.25f, 4.0f, 1.25f),
@@ -91,6 +112,7 @@ TEST_P(VoxelList, HoldsEveryOccupiedVoxelOnceStaticFirstAsADynamicBoxMoves) {
     rig.fullVoxelize();
     VoxelSet occupied = rig.read().occupancy();
     expectListMatches(readList(rig.volumes), occupied, staticSet);
+    expectIndexMatches(rig.volumes, readList(rig.volumes));
 
     // Through the pillar (voxels shared with static geometry stay static), then in the open.
     const glm::vec3 positions[] = {{21.75f, 3.0f, 13.5f}, {14.1f, 6.2f, 11.4f}, {15.0f, 20.0f, 15.0f}};
@@ -101,43 +123,83 @@ TEST_P(VoxelList, HoldsEveryOccupiedVoxelOnceStaticFirstAsADynamicBoxMoves) {
         for (const gpu::Image* img : {&rig.volumes.direct, &rig.volumes.radiance})
             gpu::uploadImage(context(), *img, ones.data(), ones.size() * 2, gpu::use::ComputeReadWrite);
         const VoxelSet before = occupied;
+        const uint32_t entriesBefore = readList(rig.volumes).header.counts.x;
 
         s.nodes[size_t(box)].translation = p;
         rig.updateTransforms(s);
         rig.dynamicFrame();
         occupied = rig.read().occupancy();
-        expectListMatches(readList(rig.volumes), occupied, staticSet);
+        const ListReadback list = readList(rig.volumes);
+        expectListMatches(list, occupied, staticSet);
+        expectIndexMatches(rig.volumes, list);
 
-        // Voxels the box left read zero in direct light and radiance; the rest keep theirs.
-        for (const gpu::Image* img : {&rig.volumes.direct, &rig.volumes.radiance}) {
-            const std::vector<uint8_t> got = gpu::readbackImage(context(), *img, gpu::use::ComputeReadWrite);
-            size_t vacated = 0, wrong = 0;
-            const int n = int(kGrid.n);
-            for (int z = 0; z < n; ++z)
-                for (int y = 0; y < n; ++y)
-                    for (int x = 0; x < n; ++x) {
-                        const bool dynamicBefore = before.get(x, y, z) && !staticSet.get(x, y, z);
-                        uint16_t h;
-                        std::memcpy(&h, got.data() + before.index(x, y, z) * 8, 2);
-                        const uint16_t want = dynamicBefore ? 0 : 0x3C00;
-                        vacated += dynamicBefore;
-                        if (h != want && ++wrong <= 5)
-                            ADD_FAILURE() << img->desc().name << " (" << x << ", " << y << ", " << z << ") = " << h
-                                          << ", expected " << want;
-                    }
-            EXPECT_GT(vacated, 0u);
+        // Voxels the box left read zero radiance; the rest keep theirs.
+        const std::vector<uint8_t> radiance =
+            gpu::readbackImage(context(), rig.volumes.radiance, gpu::use::ComputeReadWrite);
+        size_t vacated = 0, wrong = 0;
+        const int n = int(kGrid.n);
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const bool dynamicBefore = before.get(x, y, z) && !staticSet.get(x, y, z);
+                    uint16_t h;
+                    std::memcpy(&h, radiance.data() + before.index(x, y, z) * 8, 2);
+                    const uint16_t want = dynamicBefore ? 0 : 0x3C00;
+                    vacated += dynamicBefore;
+                    if (h != want && ++wrong <= 5)
+                        ADD_FAILURE() << "radiance (" << x << ", " << y << ", " << z << ") = " << h << ", expected "
+                                      << want;
+                }
+        EXPECT_GT(vacated, 0u);
+        // Last frame's dynamic slots were zeroed (the new dynamic voxels took
+        // them again, unlit until the next voxel light); static slots keep theirs.
+        const std::vector<uint8_t> direct =
+            gpu::readbackImage(context(), rig.volumes.direct, gpu::use::ComputeReadWrite);
+        const uint32_t statics = list.header.counts.y;
+        ASSERT_GT(entriesBefore, statics);
+        for (uint32_t slot = 0; slot < entriesBefore; ++slot) {
+            uint16_t h;
+            std::memcpy(&h, direct.data() + size_t(slot) * 8, 2);
+            EXPECT_EQ(h, slot < statics ? 0x3C00 : 0) << "direct light of slot " << slot;
         }
     }
 }
 
-TEST_P(VoxelList, RebuildFromTheCountsListsTheSameVoxels) {
+// The host upload of dense attributes (what the light tests start from)
+// gives every voxel with a count one static slot and reads back unchanged.
+TEST_P(VoxelList, UploadedAttributesReadBackAndAreListedAsStatic) {
     scene::Scene s;
     addStatic(s);
     VoxelRig rig(s, kGrid, GetParam());
     rig.fullVoxelize();
-    const VoxelSet occupied = rig.read().occupancy();
-    context().submitAndWait([&](VkCommandBuffer cmd) { rig.list.rebuild(cmd, rig.tracker, rig.volumes); });
-    expectListMatches(readList(rig.volumes), occupied, occupied);
+    const VoxelReadback voxelized = rig.read();
+    const VoxelSet occupied = voxelized.occupancy();
+    vxgi::DenseAttributes dense(kGrid.n);
+    dense.data = voxelized.data;
+    vxgi::VoxelVolumes fresh(context(), kGrid);
+    vxgi::uploadAttributes(context(), fresh, dense);
+    EXPECT_EQ(readVoxels(fresh).data, voxelized.data);
+    const ListReadback list = readList(fresh);
+    expectListMatches(list, occupied, occupied);
+    expectIndexMatches(fresh, list);
+}
+
+// A voxelization with fewer slots than occupied voxels counts every claim it
+// dropped (the renderer then grows the storage: RendererUpdate tests).
+TEST_P(VoxelList, RunningOutOfSlotsCountsTheDroppedClaims) {
+    scene::Scene s;
+    const int grey = addMaterial(s, glm::vec3(0.5f));
+    for (float y = 2.5f; y < 30.0f; y += 4.0f) addRect(s, grey, {1, y, 1}, {31, y, 31}, 1, 1.0f);  // 7 x 900 voxels
+    VoxelRig full(s, kGrid, GetParam());
+    full.fullVoxelize();
+    const uint32_t occupied = uint32_t(full.read().occupancy().count());
+    ASSERT_GT(occupied, sh::VOXEL_SLOT_ROW);  // more than the smallest capacity
+    VoxelRig small(s, kGrid, GetParam(), sh::VOXEL_SLOT_ROW);
+    small.fullVoxelize();
+    const ListReadback list = readList(small.volumes);
+    EXPECT_EQ(list.header.counts.x, sh::VOXEL_SLOT_ROW);
+    EXPECT_EQ(list.header.counts.w, occupied - sh::VOXEL_SLOT_ROW);
+    EXPECT_EQ(list.entries.size(), size_t(sh::VOXEL_SLOT_ROW));
 }
 
 INSTANTIATE_TEST_SUITE_P(Voxelizers, VoxelList, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);

@@ -1,0 +1,100 @@
+#include "vxgi/voxel_storage_io.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include <glm/gtc/packing.hpp>
+
+#include "gpu/barriers.h"
+#include "gpu/transfer.h"
+#include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
+#include "vxgi/volumes.h"
+#include "vxgi/voxel_list.h"
+
+namespace dvsgi::vxgi {
+
+namespace {
+
+namespace sh = dvsgi::shader;
+
+// The slot of an index value, or -1 for an empty voxel.
+int64_t slotOf(uint32_t value) {
+    const uint32_t slot1 = value & sh::VOXEL_INDEX_SLOT_MASK;
+    return slot1 == 0 || slot1 == sh::VOXEL_INDEX_FULL ? -1 : int64_t(slot1) - 1;
+}
+
+template <typename T>
+std::vector<T> readAs(const gpu::Context& ctx, const gpu::Image& image) {
+    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx, image, gpu::use::ComputeReadWrite);
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+    return out;
+}
+
+}  // namespace
+
+DenseAttributes::DenseAttributes(uint32_t n) : n(n), data(size_t(n) * n * n * sh::VOXEL_CHANNELS, 0.0f) {}
+
+std::vector<uint32_t> readVoxelIndex(const gpu::Context& ctx, const VoxelVolumes& v) {
+    const std::vector<uint8_t> bytes = gpu::readbackBuffer(ctx, v.index);
+    std::vector<uint32_t> out(bytes.size() / sizeof(uint32_t));
+    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(uint32_t));
+    return out;
+}
+
+DenseAttributes readAttributes(const gpu::Context& ctx, const VoxelVolumes& v) {
+    const std::vector<uint32_t> index = readVoxelIndex(ctx, v);
+    const std::vector<float> slots = readAs<float>(ctx, v.accum);  // channel-major: c * slots + slot
+    DenseAttributes out(v.grid.n);
+    const size_t n3 = index.size();
+    for (size_t i = 0; i < n3; ++i) {
+        const int64_t slot = slotOf(index[i]);
+        if (slot < 0) continue;
+        for (uint32_t c = 0; c < sh::VOXEL_CHANNELS; ++c) out.data[c * n3 + i] = slots[size_t(c) * v.slots + size_t(slot)];
+    }
+    return out;
+}
+
+std::vector<glm::vec4> readDirectLight(const gpu::Context& ctx, const VoxelVolumes& v) {
+    const std::vector<uint32_t> index = readVoxelIndex(ctx, v);
+    const std::vector<uint16_t> halves = readAs<uint16_t>(ctx, v.direct);
+    std::vector<glm::vec4> out(index.size(), glm::vec4(0.0f));
+    for (size_t i = 0; i < index.size(); ++i) {
+        const int64_t slot = slotOf(index[i]);
+        if (slot < 0) continue;
+        for (int c = 0; c < 4; ++c) out[i][c] = glm::unpackHalf1x16(halves[size_t(slot) * 4 + size_t(c)]);
+    }
+    return out;
+}
+
+void uploadAttributes(const gpu::Context& ctx, const VoxelVolumes& v, const DenseAttributes& a) {
+    if (a.n != v.grid.n) throw std::invalid_argument("uploadAttributes: the attributes' grid differs from the volumes'");
+    const size_t n3 = size_t(a.n) * a.n * a.n;
+    std::vector<uint32_t> index(n3, 0);
+    std::vector<float> slots(size_t(v.slots) * sh::VOXEL_CHANNELS, 0.0f);
+    std::vector<uint32_t> list(sizeof(sh::VoxelListHeader) / sizeof(uint32_t), 0);
+    uint32_t count = 0;
+    for (size_t i = 0; i < n3; ++i) {
+        if (a.data[sh::CH_COUNT * n3 + i] <= 0.0f) continue;
+        if (count == v.slots)
+            throw std::runtime_error("uploadAttributes: more occupied voxels than the " + std::to_string(v.slots) +
+                                     " slots");
+        for (uint32_t c = 0; c < sh::VOXEL_CHANNELS; ++c) slots[size_t(c) * v.slots + count] = a.data[c * n3 + i];
+        index[i] = (count + 1) | sh::VOXEL_INDEX_STATIC;
+        const uint32_t x = uint32_t(i % a.n), y = uint32_t(i / a.n % a.n), z = uint32_t(i / (size_t(a.n) * a.n));
+        list.push_back(x | y << sh::VOXEL_LIST_COORD_BITS | z << (2 * sh::VOXEL_LIST_COORD_BITS));
+        ++count;
+    }
+    sh::VoxelListHeader header{};
+    header.counts = glm::uvec4(count, count, v.slots, 0);
+    header.allGroups = glm::uvec4(voxelListDispatch(count), 0);
+    header.dynamicGroups = glm::uvec4(0, 0, 1, 0);
+    std::memcpy(list.data(), &header, sizeof(header));
+    gpu::uploadBuffer(ctx, v.index, index.data(), index.size() * sizeof(uint32_t));
+    gpu::uploadImage(ctx, v.accum, slots.data(), slots.size() * sizeof(float), gpu::use::ComputeReadWrite);
+    gpu::uploadBuffer(ctx, v.list, list.data(), list.size() * sizeof(uint32_t));
+}
+
+}  // namespace dvsgi::vxgi
