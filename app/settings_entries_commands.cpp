@@ -125,6 +125,21 @@ std::vector<Setting> conesAndCommands() {
                      "trace cones at S x the resolution and upsample with depth and normal weights", kAll, kNew},
                     0.125, 1, FIELD(settings.gather.traceScale)),
              "0.5", "a scale in 0.125..1"),
+        with(toggle({"temporal-indirect", kCones, "on|off", "",
+                     "accumulate the indirect diffuse term over frames: last frame's term is reprojected through the "
+                     "depth buffer and blended with this frame's, except where the surface there differs "
+                     "(disocclusion) or was off screen; dropped on the first frame and when static geometry, lights "
+                     "or settings change, so a single frame is unchanged",
+                     kAll, kFrame},
+                    FIELD(settings.temporal.enabled)),
+             "off"),
+        with(number({"temporal-alpha", kCones, "A", "",
+                     "smallest weight of this frame's indirect term in the blend: alpha = max(1/(n+1), A) for a "
+                     "history of n frames (the plain mean of the first 1/A frames, then an exponential average; "
+                     "1 = no accumulation)",
+                     kAll, kFrame},
+                    0.01, 1, FIELD(settings.temporal.minAlpha)),
+             "0.25", "a weight in 0.01..1"),
 
         // Animation and dynamic objects.
         with(integer({"frames", kAnimation, "K", "",
