@@ -142,7 +142,7 @@ void Renderer::uploadLights() {
     const auto* records = reinterpret_cast<const uint8_t*>(setup.lights.data());
     if (!std::equal(records, records + lightBytes, lightRecords_.begin(), lightRecords_.end())) {
         lightRecords_.assign(records, records + lightBytes);
-        temporalState_.reset();
+        temporalState_.drop(lightSettleFrames());
     }
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
     if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {
@@ -292,6 +292,16 @@ void Renderer::recordTemporal(VkCommandBuffer cmd) {
     s.advance(projectionMatrix(camera_, iw, ih) * viewMatrix(camera_));
 }
 
+// After lights or static geometry change, feedback frames carry the voxel
+// light on from the old volumes, one bounce per frame: it settles over about
+// as many frames as converging took bounces, and the indirect term's history
+// stays dropped that long (tests/render/temporal_renderer_test.cpp).
+uint32_t Renderer::lightSettleFrames() const {
+    const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
+    if (!voxelizer_ || !haveHistory_ || vl.bounceMode == vxgi::BounceMode::Fixed) return 1;
+    return convergedBounces_ ? convergedBounces_ : vl.maxBounces;
+}
+
 void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const {
     const FrameTargets& f = *targets_;
     const CompositeInputs in{f.direct, f.visibility, f.diffuse, f.specular, voxelizer_ != nullptr};
@@ -316,7 +326,8 @@ double Renderer::bounceChange() const {
 
 FrameStats Renderer::renderFrame() {
     timers_->reset();
-    if (staticDirty_) temporalState_.reset();
+    if (staticDirty_) temporalState_.drop(lightSettleFrames());
+    temporalState_.beginFrame();
     gpu::GpuTimers* t = timers_.get();
     FrameStats stats;
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
@@ -368,6 +379,7 @@ FrameStats Renderer::renderFrame() {
             recordImage(cmd);
         });
     }
+    if (converge) convergedBounces_ = stats.bounces;
     staticDirty_ = false;
     haveHistory_ = voxelizer_ != nullptr;
     for (const gpu::TimerResult& r : timers_->results()) {

@@ -150,6 +150,7 @@ private:
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
     void recordTemporal(VkCommandBuffer cmd);
+    uint32_t lightSettleFrames() const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
 
@@ -181,6 +182,7 @@ private:
     std::unique_ptr<TemporalIndirectPass> temporal_;
     TemporalState temporalState_;  // dropped when static geometry, lights or settings change
     std::vector<uint8_t> lightRecords_;  // the GpuLight records last uploaded, to notice a change
+    uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     std::optional<scene::CameraPath> cameraPath_;

@@ -54,13 +54,27 @@ private:
 };
 
 // Which of the two history pairs (FrameTargets::temporal) holds last frame's
-// term, and under which camera; the Renderer keeps one. reset() drops it
-// (first frame, static geometry or lights changed, settings changed).
+// term, and under which camera; the Renderer keeps one. drop() discards it
+// for a number of frames (first frame, static geometry or lights changed,
+// settings changed: while the voxel light still settles after a change, an
+// average would keep part of the old light).
 struct TemporalState {
     uint32_t previous = 0;  // index of last frame's pair; this frame writes the other
     bool valid = false;
+    uint32_t hold = 0;      // frames that still start without history
     glm::mat4 previousViewProj{1.0f};
-    void reset() { valid = false; }
+    void reset() { drop(1); }
+    // The next `frames` frames (at least 1) start without history.
+    void drop(uint32_t frames) {
+        valid = false;
+        hold = hold > frames ? hold : frames;
+    }
+    // At the start of each frame.
+    void beginFrame() {
+        if (hold == 0) return;
+        valid = false;
+        --hold;
+    }
     // After recording a frame that wrote pair 1 - previous under `viewProj`.
     void advance(const glm::mat4& viewProj) {
         previous = 1 - previous;
