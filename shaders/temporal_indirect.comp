@@ -56,6 +56,7 @@ void main() {
             vec2 b = q - 0.5;
             ivec2 b0 = ivec2(floor(b));
             vec2 f = b - vec2(b0);
+            f = mix(f, round(f), lessThan(abs(f - round(f)), vec2(TEMPORAL_SNAP)));
             vec3 sum = vec3(0.0);
             float count = 0.0, weight = 0.0;
             for (int j = 0; j < 2; ++j)
@@ -83,7 +84,9 @@ void main() {
         return;
     }
     float alpha = max(1.0 / (samples + 1.0), pc.params.x);
-    vec3 result = mix(history, current.rgb, alpha);
+    // history + alpha (current - history), not mix(): equal inputs give that
+    // value exactly, which lavapipe's round-toward-zero RGBA16F store keeps.
+    vec3 result = history + alpha * (current.rgb - history);
     imageStore(historyOut, px, vec4(result, min(samples + 1.0, pc.params.w)));
     imageStore(diffuse, px, vec4(result, current.a));
 }

@@ -31,6 +31,10 @@ DVSGI_CHECK_SIZE(TemporalIndirectPush, 96);
 DVSGI_CONST(float, TEMPORAL_DEPTH_TOLERANCE, 0.02);
 DVSGI_CONST(float, TEMPORAL_NORMAL_COSINE, 0.9);
 DVSGI_CONST(float, TEMPORAL_MAX_SAMPLES, 255.0);
+// A still camera reprojects each pixel onto itself up to float rounding:
+// bilinear fractions this close to a whole pixel are snapped to it, so the
+// history is not blurred a little more every frame.
+DVSGI_CONST(float, TEMPORAL_SNAP, 1e-3);
 
 DVSGI_CONST(uint, TEMPORAL_GROUP, 8);
 

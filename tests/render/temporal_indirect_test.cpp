@@ -241,7 +241,12 @@ Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const
             if (edge < 0.0 || q.x >= kW || q.y >= kH) continue;
             const glm::dvec2 b = q - 0.5;
             const glm::ivec2 b0 = glm::ivec2(glm::floor(b));
-            const glm::dvec2 fr = b - glm::dvec2(b0);
+            glm::dvec2 fr = b - glm::dvec2(b0);
+            for (int c = 0; c < 2; ++c) {
+                const double off = std::abs(fr[c] - std::round(fr[c]));
+                if (std::abs(off - sh::TEMPORAL_SNAP) < 1e-5) r.marginal[i] = true;
+                if (off < sh::TEMPORAL_SNAP) fr[c] = std::round(fr[c]);
+            }
             glm::dvec3 sum(0.0);
             double count = 0.0, weight = 0.0;
             for (int j = 0; j < 2; ++j)
@@ -271,7 +276,8 @@ Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const
             r.kind[i] = 3;
             const double samples = count / weight;
             const double alpha = std::max(1.0 / (samples + 1.0), double(minAlpha));
-            const glm::dvec3 result = glm::dvec3(sum / weight) * (1.0 - alpha) + glm::dvec3(cur) * alpha;
+            const glm::dvec3 history = sum / weight;
+            const glm::dvec3 result = history + alpha * (glm::dvec3(cur) - history);
             r.out.history[i] = glm::vec4(glm::vec3(result), float(std::min(samples + 1.0, 255.0)));
             r.out.diffuse[i] = glm::vec4(glm::vec3(result), cur.a);
         }

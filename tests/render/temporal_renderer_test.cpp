@@ -144,7 +144,8 @@ TEST_F(TemporalRenderer, SwitchedOffLightLeavesNoGhost) {
     fixed.voxelLight.bounces = 1;
     double lit = 0.0, left = 0.0;
     const int fixedFrames = framesToFade(fixed, &lit, &left);
-    std::printf("  1 bounce: indirect %.5f lit, below 1 %% after %d frame(s) off (%.2e left)\n", lit, fixedFrames, left);
+    std::printf("  1 bounce: indirect %.5f lit, below 1 %% after %d frame(s) off (%.2e left)\n", lit, fixedFrames,
+                left);
     ASSERT_GT(lit, 0.0);
     EXPECT_EQ(fixedFrames, 1);
 
