@@ -1,41 +1,17 @@
-// The settings table's entries, in --help order. A new setting is one entry
-// here plus the code that uses its field; defaults come from the bound field's
-// initialiser (render::RenderSettings for the renderer, RenderOptions else).
-#include "settings_kinds.h"
+// The settings table's entries, in --help order: output, image, scene and
+// device, voxels, voxel light here, the rest in settings_entries_commands.cpp.
+// A new setting is one entry plus the code that uses its field; defaults come
+// from the bound field's initialiser (render::RenderSettings for the renderer,
+// RenderOptions else).
+#include "settings_entries.h"
 
 namespace dvsgi::app {
 
-namespace {
+namespace entries {
 
 using namespace table;
 
-#define FIELD(expr) [](RenderOptions & o) -> auto& { return o.expr; }
-
-const char* const kOutput = "Output";
-const char* const kImage = "Image";
-const char* const kSceneDevice = "Scene and device";
-const char* const kVoxels = "Voxels";
-const char* const kVoxelLight = "Voxel light";
-const char* const kCones = "Cone tracing and composition";
-const char* const kAnimation = "Animation and dynamic objects";
-const char* const kViewerGroup = "Viewer (dvsgi view)";
-const char* const kBenchGroup = "Benchmark (dvsgi bench)";
-const char* const kSoakGroup = "Soak (dvsgi soak)";
-
-constexpr Apply kFrame = Apply::NextFrame;
-constexpr Apply kNew = Apply::NewRenderer;
-
-Setting with(Setting s, std::string example, std::string expected = "") {
-    s.example = std::move(example);
-    if (!expected.empty()) s.expected = std::move(expected);
-    return s;
-}
-
-// An entry whose default means "not set": `unset` says what happens then.
-Setting unset(Setting s, std::string meaning) {
-    s.unset = std::move(meaning);
-    return s;
-}
+namespace {
 
 // --voxel-box X0,Y0,Z0,X1,Y1,Z1 (unset: the grid on the scene's bounds).
 Setting voxelBox() {
@@ -162,58 +138,7 @@ Setting lightOcclusion() {
     return s;
 }
 
-// --dynamic NAME, repeatable.
-Setting dynamicNodes() {
-    Setting s = base({"dynamic", kAnimation, "NAME", "",
-                      "mark the node NAME dynamic; animated nodes are dynamic already. Dynamic "
-                      "geometry is re-voxelized every frame",
-                      kAll, Apply::Startup},
-                     Kind::Special);
-    s.repeatable = true;
-    s.example = "node";
-    s.unset = "none";
-    s.parse = [](RenderOptions& o, std::string_view v) {
-        o.dynamicNodes.emplace_back(v);
-        return true;
-    };
-    s.text = [](const RenderOptions& o) {
-        std::string t;
-        for (const std::string& n : o.dynamicNodes) t += (t.empty() ? "" : ",") + n;
-        return t;
-    };
-    s.json = [](const RenderOptions& o) { return nlohmann::json(o.dynamicNodes); };
-    return s;
-}
-
-// --bench-voxels 128,256.
-Setting benchVoxels() {
-    Setting s = base({"bench-voxels", kBenchGroup, "LIST", "voxels", "voxel resolutions to measure, e.g. 128,256", kBench,
-                      Apply::Startup},
-                     Kind::Special);
-    s.expected = "a comma-separated list of powers of two in 32..512";
-    s.example = "32,64";
-    s.parse = [](RenderOptions& o, std::string_view v) {
-        std::vector<uint32_t> list;
-        std::string_view rest = v;
-        while (true) {
-            const size_t comma = rest.find(',');
-            const std::optional<uint64_t> n = parseUnsigned(rest.substr(0, comma));
-            if (!n || *n < 32 || *n > 512 || (*n & (*n - 1)) != 0) return false;
-            list.push_back(uint32_t(*n));
-            if (comma == std::string_view::npos) break;
-            rest = rest.substr(comma + 1);
-        }
-        o.benchVoxels = list;
-        return true;
-    };
-    s.text = [](const RenderOptions& o) {
-        std::string t;
-        for (uint32_t n : o.benchVoxels) t += (t.empty() ? "" : ",") + std::to_string(n);
-        return t;
-    };
-    s.json = [](const RenderOptions& o) { return nlohmann::json(o.benchVoxels); };
-    return s;
-}
+}  // namespace
 
 // Output, image, scene and device, voxels, voxel light.
 std::vector<Setting> imageAndVoxels() {
@@ -393,168 +318,9 @@ std::vector<Setting> imageAndVoxels() {
     };
 }
 
-// Cone tracing, animation, and the viewer's and the bench's own settings.
-std::vector<Setting> conesAndCommands() {
-    return {
-        // Cone tracing and composition.
-        with(choice({"cones", kCones, "6|16", "",
-                     "diffuse cone set: the paper's six 60-degree cones or sixteen equal-solid-angle cones; "
-                     "cosine-weighted and normalized so a uniform radiance L gives irradiance pi*L",
-                     kAll, kFrame},
-                    {{"6", 6u}, {"16", 16u}}, FIELD(settings.cones.coneSet)),
-             "16"),
-        with(number({"cone-step", kCones, "B", "", "step = B * cone diameter (beta)", kAll, kFrame}, 0.05, 4,
-                    FIELD(settings.cones.stepFactor)),
-             "1", "a step factor beta in 0.05..4"),
-        with(number({"cone-min-step", kCones, "S", "voxels", "smallest step", kAll, kFrame}, 0.05, 8,
-                    FIELD(settings.cones.minStepVoxels)),
-             "1", "a step in voxels in 0.05..8"),
-        with(number({"max-distance", kCones, "M", "m", "longest cone (0 = the grid's diagonal)", kAll, kFrame}, 0,
-                    1e6, FIELD(settings.cones.maxDistance)),
-             "2", "metres >= 0 (0 = the grid's diagonal)"),
-        with(number({"cone-offset", kCones, "V", "voxels", "cone origins move V voxels along the normal", kAll,
-                     kFrame},
-                    0, 16, FIELD(settings.cones.offsetVoxels)),
-             "1", "voxels in 0..16"),
-        with(number({"cone-clearance", kCones, "K", "",
-                     "near a surface, sample mip cells no larger than (height over it - 1 voxel) / K, so a cone "
-                     "does not read the surface it leaves (0 = the paper's plain diameter rule)",
-                     kAll, kFrame},
-                    0, 8, FIELD(settings.cones.clearance)),
-             "2", "a number in 0..8 (0 = off)"),
-        with(toggle({"specular", kCones, "on|off", "",
-                     "one cone along the reflected view direction for glossy materials, tan(half-angle) = "
-                     "roughness^2",
-                     kAll, kFrame},
-                    FIELD(settings.gather.specular)),
-             "off"),
-        with(number({"min-specular-angle", kCones, "A", "degrees", "half-angle of the narrowest specular cone", kAll,
-                     kFrame},
-                    0.1, 45, FIELD(settings.gather.minSpecularDegrees)),
-             "5", "degrees in 0.1..45"),
-        with(number({"ao-lambda", kCones, "L", "", "ambient occlusion falloff f(r) = 1/(1 + L r), r in voxels", kAll,
-                     kFrame},
-                    0, 1000, FIELD(settings.gather.aoLambda)),
-             "1"),
-        with(toggle({"ao", kCones, "on|off", "",
-                     "multiply the indirect terms by the AO (off: the cones already account for occlusion)", kAll,
-                     kFrame},
-                    FIELD(settings.applyAO)),
-             "on"),
-        with(choice({"shadows", kCones, "map|cone", "",
-                     "direct-light visibility from shadow maps or from a cone toward each light (paper Table V; "
-                     "needs voxels)",
-                     kAll, kFrame},
-                    {{"map", false}, {"cone", true}}, FIELD(settings.shadowCones.enabled)),
-             "cone"),
-        with(number({"shadow-aperture", kCones, "D", "degrees", "full angle of the shadow cones", kAll, kFrame}, 0.1,
-                    90, FIELD(settings.shadowCones.apertureDegrees)),
-             "10", "degrees in 0.1..90"),
-        with(number({"trace-scale", kCones, "S", "",
-                     "trace cones at S x the resolution and upsample with depth and normal weights", kAll, kNew},
-                    0.125, 1, FIELD(settings.gather.traceScale)),
-             "0.5", "a scale in 0.125..1"),
+}  // namespace entries
 
-        // Animation and dynamic objects.
-        with(integer({"frames", kAnimation, "K", "",
-                      "render K frames of the glTF animations, K*time-step seconds, and write the last; a '#' run "
-                      "in --out writes every frame",
-                      kRender},
-                     1, 100000, FIELD(frames)),
-             "3"),
-        with(number({"time-step", kAnimation, "S", "s", "seconds between frames", kAll, Apply::Viewer}, 0, 3600,
-                    FIELD(timeStep)),
-             "0.1", "seconds in 0..3600"),
-        dynamicNodes(),
-        unset(with(text({"add-model", kAnimation, "FILE", "",
-                   "add FILE (any supported format) as a dynamic object moving on a circle through the scene, one "
-                   "turn per 120 frames (bench: the Stanford bunny unless given; none = no moving object)"},
-                  FIELD(addModel)),
-             "bunny.ply"), "none"),
-        unset(with(text({"camera-path", kAnimation, "FILE.json", "",
-                         "drive the camera (--camera) along keyframes of time, position, target or orientation and "
-                         "field of view (format: docs/camera-paths.md); render and bench sample it at frame * "
-                         "--time-step, the viewer plays it",
-                         kRender | kView | kBench},
-                        FIELD(cameraPath)),
-                   "walk.json"),
-              "the scene's camera"),
-        unset(with(number({"add-model-size", kAnimation, "M", "m", "the added model's largest extent"}, 1e-4, 1e4,
-                          FIELD(addModelSize)),
-                   "0.5", "a size in metres in 0.0001..10000"),
-              "1/5 of the scene"),
-
-        // dvsgi view.
-        with(toggle({"vsync", kViewerGroup, "on|off", "", "FIFO presentation, or the fastest mode available (off)",
-                     kView},
-                    FIELD(vsync)),
-             "off"),
-        with(integer({"view-frames", kViewerGroup, "K", "", "close the window after K frames (0 = when closed)", kView},
-                     0, 1e9, FIELD(viewFrames)),
-             "3"),
-        unset(with(text({"screenshot", kViewerGroup, "FILE.exr", "",
-                   "on closing, write the last frame as FILE.exr and FILE.png (as the screenshot key does)", kView},
-                  FIELD(screenshot), ".exr"),
-             "shot.exr"), "none"),
-
-        with(text({"record-path", kViewerGroup, "FILE.json", "",
-                   "where the K key writes the camera path it records (a key per press: the camera's pose, field of "
-                   "view and time; docs/camera-paths.md)",
-                   kView},
-                  FIELD(recordPath), ".json"),
-             "walk.json"),
-
-        // dvsgi bench.
-        with(text({"bench-out", kBenchGroup, "FILE.json", "", "results; a markdown table goes to stdout", kBench},
-                  FIELD(benchOut), ".json"),
-             "b.json"),
-        with(text({"shared", kBenchGroup, "DIR", "", "the shared data folder holding scenes/", kBench}, FIELD(sharedDir)),
-             "/data/shared"),
-        benchVoxels(),
-        with(integer({"bench-frames", kBenchGroup, "K", "",
-                      "measured frames per scene and resolution; each re-runs static voxelization. Median, min "
-                      "and max per pass",
-                      kBench},
-                     1, 10000, FIELD(benchFrames)),
-             "3"),
-        with(integer({"bench-warmup", kBenchGroup, "W", "", "frames rendered before measuring, not recorded", kBench}, 0,
-                     1000, FIELD(benchWarmup)),
-             "1"),
-        with(number({"bench-max-seconds", kBenchGroup, "S", "s",
-                     "stop measuring a scene/resolution once it has run S seconds (at least one frame; the JSON "
-                     "records the frames measured); 0 = always K frames",
-                     kBench},
-                    0, 1e6, FIELD(benchMaxSeconds)),
-             "5", "seconds in 0..1000000 (0 = no limit)"),
-        with(flag({"bench-quick", kBenchGroup, "", "", "Cornell box only, 32^3, 2 frames, 160x90 (a smoke test)", kBench},
-                  FIELD(benchQuick)),
-             "on"),
-        with(flag({"bench-tables", kBenchGroup, "", "",
-                   "also measure the variants of the paper's Table III (voxel raycast occlusion) and Table V "
-                   "(shadow cones of 1, 5, 10, 25 degrees) for every scene and size (six times the runs)",
-                   kBench},
-                  FIELD(benchTables)),
-             "on"),
-
-        // dvsgi soak.
-        with(integer({"soak-frames", kSoakGroup, "N", "", "frames in all", kSoak}, 1, 100000000, FIELD(soakFrames)),
-             "400"),
-        with(integer({"soak-every", kSoakGroup, "K", "", "frames between setting changes and memory reports", kSoak},
-                     1, 1000000, FIELD(soakEvery)),
-             "20"),
-        with(text({"soak-out", kSoakGroup, "FILE.json", "", "the report series and the growth", kSoak},
-                  FIELD(soakOut), ".json"),
-             "s.json"),
-        with(number({"soak-max-growth", kSoakGroup, "P", "%",
-                     "fail (exit 4) when RSS or device memory grows by more than P percent after the first "
-                     "settings cycle",
-                     kSoak},
-                    0, 1000, FIELD(soakMaxGrowth)),
-             "2", "a percentage in 0..1000"),
-    };
-}
-
-}  // namespace
+using namespace entries;
 
 const std::vector<Setting>& settingsTable() {
     static const std::vector<Setting> table = [] {

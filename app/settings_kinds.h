@@ -1,7 +1,7 @@
-// Builders for the entries of the settings table (app/settings_entries.cpp):
+// Builders for the entries of the settings table (app/settings_entries*.cpp):
 // each takes the metadata and a binding `ref`, a lambda from RenderOptions& to
 // the field it sets, and fills in parse/text/json (and the panel's numeric
-// access) for its kind. Internal to the table's two source files.
+// access) for its kind. Internal to the table's source files.
 #pragma once
 
 #include <cmath>

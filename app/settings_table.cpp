@@ -1,6 +1,6 @@
 // What the settings table's entries share: value spelling, ranges, the JSON
 // record and the mapping of library messages to flags. The entries themselves
-// are in settings_entries.cpp.
+// are in settings_entries.cpp and settings_entries_commands.cpp.
 #include <algorithm>
 #include <cctype>
 #include <charconv>

@@ -59,7 +59,7 @@ auto guarded(F&& f) -> decltype(f()) {
 
 bool powerOfTwo(uint32_t n) { return n != 0 && (n & (n - 1)) == 0; }
 
-// The same ranges as `dvsgi render` (app/settings_entries.cpp), so both accept the same settings.
+// The same ranges as `dvsgi render` (app/settings_entries*.cpp), so both accept the same settings.
 void validate(const Settings& s, uint32_t cameras) {
     if (s.width < 1 || s.width > 16384) badSetting("width", "1..16384", std::to_string(s.width));
     if (s.height < 1 || s.height > 16384) badSetting("height", "1..16384", std::to_string(s.height));

@@ -24,6 +24,12 @@ uint64_t GBuffer::memoryBytes() const {
     return base.memorySize() + normal.memorySize() + emission.memorySize() + depth.memorySize();
 }
 
+uint64_t TemporalHistory::memoryBytes() const {
+    uint64_t bytes = 0;
+    for (int i = 0; i < 2; ++i) bytes += color[i].memorySize() + surface[i].memorySize();
+    return bytes;
+}
+
 uint32_t FrameSize::traceWidth() const { return std::max(1u, uint32_t(std::lround(internalWidth() * traceScale))); }
 uint32_t FrameSize::traceHeight() const { return std::max(1u, uint32_t(std::lround(internalHeight() * traceScale))); }
 
@@ -54,6 +60,13 @@ FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
                                   "specular (trace size)");
     }
     t.output = image2D(ctx, VK_FORMAT_R32G32B32A32_SFLOAT, s.width, s.height, storage, "output");
+    if (s.temporalHistory)
+        for (int i = 0; i < 2; ++i) {
+            t.temporal.color[i] = image2D(ctx, VK_FORMAT_R32G32B32A32_SFLOAT, iw, ih, storage,
+                                          i == 0 ? "indirect history 0" : "indirect history 1");
+            t.temporal.surface[i] = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, iw, ih, storage,
+                                            i == 0 ? "history surface 0" : "history surface 1");
+        }
     return t;
 }
 

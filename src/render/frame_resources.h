@@ -26,10 +26,20 @@ struct FrameSize {
     float traceScale = 1.0f;         // cone-trace resolution / internal resolution
     uint32_t shadowMapSize = 0;
     uint32_t shadowViews = 0;        // layers of the shadow-map array
+    bool temporalHistory = false;    // the indirect term's history pairs (with voxels)
     uint32_t internalWidth() const { return width * supersample; }
     uint32_t internalHeight() const { return height * supersample; }
     uint32_t traceWidth() const;   // cone-tracing size: internal x traceScale, at least 1
     uint32_t traceHeight() const;
+};
+
+// The history of the temporal accumulation (render/temporal_indirect.h), at
+// internal size: two pairs that swap every frame, one holding last frame's
+// values, the other receiving this frame's.
+struct TemporalHistory {
+    gpu::Image color[2];    // RGBA32F accumulated indirect diffuse, a = sample count
+    gpu::Image surface[2];  // RGBA16F normal xyz, w = view depth (0: no geometry)
+    uint64_t memoryBytes() const;
 };
 
 struct FrameTargets {
@@ -40,6 +50,7 @@ struct FrameTargets {
     gpu::Image diffuse, specular;  // RGBA16F internal size: cone-traced indirect diffuse (+ AO in a), specular
     gpu::Image traceDiffuse, traceSpecular;  // the same at trace size, only when traceScale < 1
     gpu::Image output;             // RGBA32F output size: the composited frame, or the voxel view
+    TemporalHistory temporal;      // empty without FrameSize::temporalHistory
     uint32_t traceWidth = 0, traceHeight = 0;
     bool reducedTrace() const { return bool(traceDiffuse); }
 };

@@ -84,6 +84,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     size.traceScale = settings.gather.traceScale;
     size.shadowMapSize = settings.shadowMapSize;
     size.shadowViews = viewCount_;
+    size.temporalHistory = settings.voxels > 0;
     targets_ = std::make_unique<FrameTargets>(createFrameTargets(ctx, size));
     samplers_ = std::make_unique<Samplers>(createSamplers(ctx));
     shadows_ = std::make_unique<ShadowPass>(ctx, *sceneGpu_);
@@ -113,6 +114,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
+        temporal_ = std::make_unique<TemporalIndirectPass>(ctx);
     }
     for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
     if (settings.voxels == 0 && settings.view.mode != ViewMode::Final)
@@ -139,6 +141,12 @@ void Renderer::uploadLights() {
         }
     }
     const VkDeviceSize lightBytes = setup.lights.size() * sizeof(sh::GpuLight);
+    // Accumulated indirect light of other lights would linger (ghosts).
+    const auto* records = reinterpret_cast<const uint8_t*>(setup.lights.data());
+    if (!std::equal(records, records + lightBytes, lightRecords_.begin(), lightRecords_.end())) {
+        lightRecords_.assign(records, records + lightBytes);
+        temporalState_.drop(lightSettleFrames());
+    }
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
     if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {
         if (lightBytes) gpu::uploadBuffer(ctx_, *lights_, setup.lights.data(), lightBytes);
@@ -267,8 +275,34 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
                                 f.reducedTrace() ? &f.traceSpecular : nullptr};
         gather_->record(cmd, tracker_, in, out, settings_.gather, settings_.cones, t);
+        recordTemporal(cmd);
     }
     recordComposite(cmd, settings_.outputTerm, t);
+}
+
+void Renderer::recordTemporal(VkCommandBuffer cmd) {
+    if (!settings_.temporal.enabled) {
+        temporalState_.reset();
+        return;
+    }
+    FrameTargets& f = *targets_;
+    TemporalState& s = temporalState_;
+    const TemporalIndirectInputs in{f.gbuffer, *samplers_, *frame_, f.temporal.color[s.previous],
+                                    f.temporal.surface[s.previous], s.previousViewProj, s.valid};
+    const TemporalIndirectTargets out{f.diffuse, f.temporal.color[1 - s.previous], f.temporal.surface[1 - s.previous]};
+    temporal_->record(cmd, tracker_, in, out, settings_.temporal, timers_.get());
+    const uint32_t iw = settings_.width * settings_.supersample, ih = settings_.height * settings_.supersample;
+    s.advance(projectionMatrix(camera_, iw, ih) * viewMatrix(camera_));
+}
+
+// After lights or static geometry change, feedback frames carry the voxel
+// light on from the old volumes, one bounce per frame: it settles over about
+// as many frames as converging took bounces, and the indirect term's history
+// stays dropped that long (tests/render/temporal_renderer_test.cpp).
+uint32_t Renderer::lightSettleFrames() const {
+    const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
+    if (!voxelizer_ || !haveHistory_ || vl.bounceMode == vxgi::BounceMode::Fixed) return 1;
+    return convergedBounces_ ? convergedBounces_ : vl.maxBounces;
 }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const {
@@ -295,6 +329,8 @@ double Renderer::bounceChange() const {
 
 FrameStats Renderer::renderFrame() {
     timers_->reset();
+    if (staticDirty_) temporalState_.drop(lightSettleFrames());
+    temporalState_.beginFrame();
     gpu::GpuTimers* t = timers_.get();
     FrameStats stats;
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
@@ -347,6 +383,7 @@ FrameStats Renderer::renderFrame() {
             recordImage(cmd);
         });
     }
+    if (converge) convergedBounces_ = stats.bounces;
     staticDirty_ = false;
     haveHistory_ = voxelizer_ != nullptr;
     for (const gpu::TimerResult& r : timers_->results()) {
@@ -404,6 +441,7 @@ bool Renderer::applySettings(const RenderSettings& s) {
                        s.shadows != settings_.shadows || s.normalOffsetTexels != settings_.normalOffsetTexels ||
                        s.lightOcclusion != settings_.lightOcclusion;
     settings_ = s;
+    temporalState_.reset();  // the accumulated term belongs to the old settings
     const uint32_t scopes = 64 + 3 * std::max({n.maxBounces, n.bounces, 1u});
     if (scopes > timers_->capacity()) timers_ = std::make_unique<gpu::GpuTimers>(ctx_, scopes);
     if (light) {
@@ -441,6 +479,7 @@ std::vector<MemoryItem> Renderer::memory() const {
                                                             : 0)},
         {"output", targets_->output.memorySize()},
     };
+    if (targets_->temporal.memoryBytes()) items.push_back({"indirect history", targets_->temporal.memoryBytes()});
     if (voxelizer_) {
         items.push_back({"voxel slot index", volumes_->index.size()});
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});

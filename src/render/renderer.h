@@ -15,6 +15,7 @@
 #include "render/frame_resources.h"
 #include "render/gather.h"
 #include "render/lighting.h"
+#include "render/temporal_indirect.h"
 #include "render/voxel_view.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
@@ -57,6 +58,7 @@ struct RenderSettings {
     ShadowConeSettings shadowCones;  // cones instead of shadow maps for direct light
     uint32_t outputTerm = 0;         // shader::TERM_* (full, direct, indirect, specular, ao, shadow)
     bool applyAO = false;            // multiply the indirect terms by the cone AO
+    TemporalSettings temporal;       // accumulation of the indirect diffuse term over frames
     // Emissive surfaces as area-light patches (render/emitters.h) at voxels and
     // pixels, their emission then left out of the cone-gathered radiance.
     bool emitterLights = true;
@@ -150,6 +152,8 @@ private:
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
+    void recordTemporal(VkCommandBuffer cmd);
+    uint32_t lightSettleFrames() const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
     bool growVoxelSlots();       // after a voxelization that ran out of slots: bigger volumes
@@ -179,6 +183,10 @@ private:
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
     std::unique_ptr<GatherPass> gather_;
+    std::unique_ptr<TemporalIndirectPass> temporal_;
+    TemporalState temporalState_;  // dropped when static geometry, lights or settings change
+    std::vector<uint8_t> lightRecords_;  // the GpuLight records last uploaded, to notice a change
+    uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     std::optional<scene::CameraPath> cameraPath_;

@@ -1,0 +1,86 @@
+// Temporal accumulation of the per-pixel indirect diffuse term (issue #11
+// item 3): last frame's accumulated term is reprojected into this frame
+// through the depth buffer and both cameras, rejected where the surface
+// differs (disocclusion) or falls off screen, and blended with this frame's
+// cone-traced term. Runs after the gather (and upsampling), before the
+// composite; shaders/temporal_indirect.comp says how.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "render/frame_resources.h"
+
+namespace dvsgi::gpu {
+class GpuTimers;
+class Tracker;
+}
+
+namespace dvsgi::render {
+
+struct TemporalSettings {
+    bool enabled = true;   // off: the gather's term goes to the composite as it is
+    float minAlpha = 0.1f; // smallest weight of this frame's term (reached after 1/minAlpha - 1 frames)
+};
+
+struct TemporalIndirectInputs {
+    const GBuffer& gbuffer;  // this frame's depth and normals
+    const Samplers& samplers;
+    const gpu::Buffer& frame;  // FrameConstants of this frame's camera
+    const gpu::Image& history;  // last frame's accumulated term (RGBA32F, a = sample count)
+    const gpu::Image& surface;  // last frame's normal and view depth (RGBA16F)
+    glm::mat4 previousViewProj;  // last frame's camera, as FrameConstants::viewProj
+    bool historyValid;           // false: first frame or a reset, the history is not read
+};
+
+struct TemporalIndirectTargets {
+    const gpu::Image& diffuse;  // internal size, read and overwritten with the accumulated term (a kept)
+    const gpu::Image& history;  // this frame's accumulated term and count, for the next frame
+    const gpu::Image& surface;  // this frame's normal and view depth
+};
+
+class TemporalIndirectPass {
+public:
+    explicit TemporalIndirectPass(const gpu::Context& ctx);
+    // Writes the history targets whole; `diffuse` changes only where history
+    // was accepted, so without valid history it stays exactly as it was.
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const TemporalIndirectInputs& in,
+                const TemporalIndirectTargets& out, const TemporalSettings& settings, gpu::GpuTimers* timers) const;
+
+private:
+    const gpu::Context& ctx_;
+    gpu::Pipeline pipeline_;
+};
+
+// Which of the two history pairs (FrameTargets::temporal) holds last frame's
+// term, and under which camera; the Renderer keeps one. drop() discards it
+// for a number of frames (first frame, static geometry or lights changed,
+// settings changed: while the voxel light still settles after a change, an
+// average would keep part of the old light).
+struct TemporalState {
+    uint32_t previous = 0;  // index of last frame's pair; this frame writes the other
+    bool valid = false;
+    uint32_t hold = 0;      // frames that still start without history
+    glm::mat4 previousViewProj{1.0f};
+    void reset() { drop(1); }
+    // The next `frames` frames (at least 1) start without history.
+    void drop(uint32_t frames) {
+        valid = false;
+        hold = hold > frames ? hold : frames;
+    }
+    // At the start of each frame.
+    void beginFrame() {
+        if (hold == 0) return;
+        valid = false;
+        --hold;
+    }
+    // After recording a frame that wrote pair 1 - previous under `viewProj`.
+    void advance(const glm::mat4& viewProj) {
+        previous = 1 - previous;
+        valid = true;
+        previousViewProj = viewProj;
+    }
+};
+
+}  // namespace dvsgi::render
