@@ -88,6 +88,13 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
                                  " voxel slots needs 3D images of " + std::to_string(sh::VOXEL_SLOT_ROW) + " x " +
                                  std::to_string(slots / sh::VOXEL_SLOT_ROW) + " texels, but " + ctx.deviceName +
                                  " allows " + std::to_string(limits.maxImageDimension3D) + " per side");
+    const uint64_t indexBytes = uint64_t(g.n) * g.n * g.n * sizeof(uint32_t);
+    const uint64_t bufferBytes = std::max(indexBytes, voxelListBytes(slots));
+    if (bufferBytes > limits.maxStorageBufferRange)
+        throw std::runtime_error("voxels: " + std::to_string(g.n) + "^3 needs a " +
+                                 std::to_string(bufferBytes >> 20) + " MiB storage buffer (the slot index), but " +
+                                 ctx.deviceName + " allows " + std::to_string(limits.maxStorageBufferRange >> 20) +
+                                 " MiB; use fewer voxels");
     if (!ctx.features.atomicFloat)
         throw std::runtime_error(ctx.deviceName + " lacks shaderImageFloat32AtomicAdd, which voxelization needs");
 
