@@ -124,7 +124,7 @@ std::vector<Setting> conesAndCommands() {
         with(number({"trace-scale", kCones, "S", "",
                      "trace cones at S x the resolution and upsample with depth and normal weights", kAll, kNew},
                     0.125, 1, FIELD(settings.gather.traceScale)),
-             "0.5", "a scale in 0.125..1"),
+             "0.25", "a scale in 0.125..1"),
         with(toggle({"temporal-indirect", kCones, "on|off", "",
                      "accumulate the indirect diffuse term over frames: last frame's term is reprojected through the "
                      "depth buffer and blended with this frame's, except where the surface there differs "

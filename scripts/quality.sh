@@ -25,8 +25,9 @@ table="$out/gi-${size}px-${voxels}.md"
 } > "$table"
 cases=(
   "defaults|"
-  "paper: 1 bounce, emitters by cones|--bounces 1 --emitters cones"
+  "paper: 1 bounce, emitters by cones, every pixel traced|--bounces 1 --emitters cones --trace-scale 1"
   "defaults, 16 cones|--cones 16"
+  "defaults, every pixel traced|--trace-scale 1"
 )
 for scene in cornell-lights cornell-emissive; do
   for c in "${cases[@]}"; do

@@ -70,7 +70,7 @@ struct Settings {
     bool specular = true;                // reflection cone for glossy materials
     bool ao = false;                     // multiply the indirect terms by the cone AO
     float aoLambda = 0.5f;               // AO falloff 1/(1 + lambda r), r in voxels; 0..1000
-    float traceScale = 1.0f;             // cone-trace resolution factor, 0.125..1
+    float traceScale = 0.5f;             // cone-trace resolution factor, 0.125..1
     uint32_t shadowMapSize = 2048;       // power of two in 256..8192
     Output output = Output::Full;
 };

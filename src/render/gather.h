@@ -22,7 +22,9 @@ struct GatherSettings {
     float aoLambda = 0.5f;        // f(r) = 1 / (1 + lambda r), r in voxels
     bool specular = true;
     float minSpecularDegrees = 1.0f;  // half-angle of the narrowest specular cone, degrees
-    float traceScale = 1.0f;      // trace resolution / internal resolution
+    // Trace resolution / internal resolution. Half: a quarter of the cone work;
+    // the reference renders differ by under 0.003 relative RMSE (docs/quality.md).
+    float traceScale = 0.5f;
 };
 
 struct GatherInputs {

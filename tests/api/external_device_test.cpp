@@ -384,7 +384,7 @@ TEST_F(AppDevice, ErrorsNameTheSetting) {
     s = smallSettings();
     s.traceScale = 2.0f;
     EXPECT_THROW(renderer.setSettings(s), dvsgi::Error);
-    EXPECT_EQ(renderer.settings().traceScale, 1.0f);
+    EXPECT_EQ(renderer.settings().traceScale, smallSettings().traceScale);
     EXPECT_NO_THROW(renderer.render());
     try {
         dvsgi::DeviceOptions options;

@@ -51,6 +51,9 @@ render::RenderSettings settings() {
     rs.shadowMapSize = 256;
     rs.voxels = 64;
     rs.outputTerm = sh::TERM_SPECULAR;
+    // The cone itself, pixel for pixel: every pixel traced (the default half
+    // resolution moves the upsampled peak by about 0.7 px and lowers it 4 %).
+    rs.gather.traceScale = 1.0f;
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
     // The emitter's radiance must stay in the voxels for the cone to see it
