@@ -68,6 +68,7 @@ void modelTraffic(const gpu::Context& ctx, const render::Renderer& renderer, con
     in.traceHeight = size.traceHeight();
     in.shadowMapSize = s.shadowMapSize;
     in.shadowViews = renderer.shadowViewCount();
+    in.temporal = s.temporal.enabled;
     in.staticGeometryBytes = geometry.staticBytes;
     in.dynamicGeometryBytes = geometry.dynamicBytes;
     in.bounces = bounces;
@@ -121,6 +122,7 @@ void addTrafficJson(const Measurement& m, double copyGbps, nlohmann::json& json)
                            {"static_geometry_bytes", in.staticGeometryBytes},
                            {"dynamic_geometry_bytes", in.dynamicGeometryBytes},
                            {"slots", in.slots},
+                           {"temporal", in.temporal},
                            {"bounces", in.bounces}};
     // The whole frame: the modelled bytes of its passes over its time.
     const uint64_t bytes = frameBytes(m);

@@ -25,6 +25,7 @@ constexpr uint64_t kDirectBytes = 16;       // RGBA32F direct radiance
 constexpr uint64_t kVisibilityBytes = 2;    // R16F light visibility
 constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specular
 constexpr uint64_t kOutputBytes = 16;       // RGBA32F
+constexpr uint64_t kHistoryBytes = 16 + 8;  // temporal history: RGBA32F sum, RGBA16F normal + depth
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 
@@ -101,6 +102,11 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
             out.push_back({"upsample", trace * 2 * kTermBytes + internal * (kGBufferColorBytes + kDepthBytes),
                            internal * 2 * kTermBytes});
     }
+    if (in.voxels > 0 && in.temporal)
+        // Depth, normal, the indirect term and last frame's history in; the
+        // blended term and this frame's history out.
+        out.push_back({"temporal indirect", internal * (kDepthBytes + kGBufferColorBytes + kTermBytes + kHistoryBytes),
+                       internal * (kTermBytes + kHistoryBytes)});
     const uint64_t terms = in.voxels > 0 ? 2 * kTermBytes : 0;
     out.push_back({"composite", internal * (kDirectBytes + terms), output * kOutputBytes});
     return out;

@@ -83,6 +83,17 @@ TEST(BytesModel, ReducedTraceAddsTheUpsample) {
     expectPass(p, "upsample", 3600 * 16 + 14400 * 12, 14400 * 16);
 }
 
+TEST(BytesModel, TemporalIndirectRunsOnlyWhenOnAndReadsItsHistory) {
+    ModelInputs in = handCase();
+    EXPECT_EQ(findPass(passTraffic(in), "temporal indirect"), nullptr);
+    in.temporal = true;
+    // 160x90 pixels: depth 4, normal 8, indirect 8 and history 16 + 8 bytes in;
+    // indirect 8 and history 16 + 8 out.
+    expectPass(passTraffic(in), "temporal indirect", 14400 * (4 + 8 + 8 + 24), 14400 * (8 + 24));
+    in.voxels = 0;
+    EXPECT_EQ(findPass(passTraffic(in), "temporal indirect"), nullptr);
+}
+
 TEST(BytesModel, DenseVoxelPassesMatchTheVolumeSizes) {
     for (uint32_t n : {16u, 64u, 256u}) {
         ModelInputs in = handCase();
