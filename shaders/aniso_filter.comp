@@ -15,25 +15,15 @@ layout(set = 0, binding = BIND_ANISO_SOURCE_DIRS, rgba16f) uniform readonly imag
 layout(set = 0, binding = BIND_ANISO_TARGET_DIRS, rgba16f) uniform writeonly image3D targetDirs[6];
 layout(push_constant) uniform Push { AnisoPush pc; };
 
-// The 2x2x2 children, x fastest: the base level reads the radiance once for
-// all six directions (six reads of each child cost a sixth of the pass on
-// lavapipe); upper levels read the direction's own previous level.
-vec4 children[8];
-
-void loadChildren(ivec3 base, uint dir) {
-    for (int i = 0; i < 8; ++i) {
-        ivec3 p = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
-        children[i] = pc.sizes.y != 0u ? imageLoad(source, p) : imageLoad(sourceDirs[dir], p);
-    }
+vec4 child(uint dir, ivec3 p) {
+    return pc.sizes.y != 0u ? imageLoad(source, p) : imageLoad(sourceDirs[dir], p);
 }
 
 void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(v, ivec3(pc.sizes.x)))) return;
     ivec3 base = v * 2;
-    if (pc.sizes.y != 0u) loadChildren(base, 0u);
     for (uint dir = 0u; dir < 6u; ++dir) {
-        if (pc.sizes.y == 0u) loadChildren(base, dir);
         int axis = int(dir / 2u);
         // Travelling toward -axis (even dir) the ray enters the +axis child first.
         int frontOffset = (dir % 2u == 0u) ? 1 : 0;
@@ -45,8 +35,7 @@ void main() {
                 int u = (axis + 1) % 3, w = (axis + 2) % 3;
                 front[u] = a; front[w] = b; front[axis] = frontOffset;
                 back[u] = a; back[w] = b; back[axis] = 1 - frontOffset;
-                vec4 f = children[front.x + 2 * front.y + 4 * front.z];
-                vec4 k = children[back.x + 2 * back.y + 4 * back.z];
+                vec4 f = child(dir, base + front), k = child(dir, base + back);
                 sum += f + k * (1.0 - f.a);
             }
         imageStore(targetDirs[dir], v, sum * 0.25);
