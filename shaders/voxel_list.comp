@@ -14,12 +14,6 @@ layout(push_constant) uniform Push { VoxelListPush pc; };
 #include "lib/voxel_list.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 
-uvec4 dispatchOver(uint entries) {
-    uint groups = (entries + VOXEL_LIST_GROUP - 1u) / VOXEL_LIST_GROUP;
-    uint x = min(groups, VOXEL_LIST_ROW);
-    return uvec4(x, x == 0u ? 0u : (groups + x - 1u) / x, 1u, 0u);
-}
-
 void main() {
     uint mode = pc.mode.x;
     if (listInvocation() != 0u) return;
@@ -32,6 +26,6 @@ void main() {
     list.header.counts.x = count;
     if (mode == LIST_FINISH_STATIC) list.header.counts.y = count;
     uint statics = min(list.header.counts.y, count);
-    list.header.allGroups = dispatchOver(count);
-    list.header.dynamicGroups = dispatchOver(count - statics);
+    list.header.allGroups = voxelListDispatch(count);
+    list.header.dynamicGroups = voxelListDispatch(count - statics);
 }

@@ -21,11 +21,14 @@ using uint = uint32_t;
 #define DVSGI_END }
 #define DVSGI_CONST(type, name, value) inline constexpr type name = value
 #define DVSGI_CHECK_SIZE(type, bytes) static_assert(sizeof(type) == (bytes), #type " layout changed")
+// A function written once in the subset of C++ and GLSL both accept.
+#define DVSGI_FUNCTION inline
 #else
 #define DVSGI_BEGIN
 #define DVSGI_END
 #define DVSGI_CONST(type, name, value) const type name = value
 #define DVSGI_CHECK_SIZE(type, bytes)
+#define DVSGI_FUNCTION
 #endif
 
 #endif

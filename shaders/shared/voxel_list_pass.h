@@ -27,6 +27,14 @@ DVSGI_CONST(uint, VOXEL_LIST_GROUP, 64);
 DVSGI_CONST(uint, VOXEL_LIST_ROW, 4096);
 DVSGI_CONST(uint, VOXEL_LIST_COORD_BITS, 10);  // N <= 1024
 
+// The indirect dispatch arguments (x, y, z) over `entries` list entries, for
+// voxel_list.comp and for lists the host uploads.
+DVSGI_FUNCTION uvec4 voxelListDispatch(uint entries) {
+    uint groups = (entries + VOXEL_LIST_GROUP - 1u) / VOXEL_LIST_GROUP;
+    uint x = groups < VOXEL_LIST_ROW ? groups : VOXEL_LIST_ROW;
+    return uvec4(x, x == 0u ? 0u : (groups + x - 1u) / x, 1u, 0u);
+}
+
 // voxel_list.comp modes (VoxelListPush.mode.x).
 DVSGI_CONST(uint, LIST_FINISH, 0);         // clamp the count, write both dispatch arguments
 DVSGI_CONST(uint, LIST_FINISH_STATIC, 1);  // as FINISH, after static voxelization: all entries are static

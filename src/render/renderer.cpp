@@ -190,10 +190,15 @@ Renderer::~Renderer() = default;
 
 uint64_t Renderer::triangleCount() const { return sceneGpu_->triangleCount; }
 
+glm::mat4 Renderer::viewProjection() const {
+    const uint32_t iw = settings_.width * settings_.supersample, ih = settings_.height * settings_.supersample;
+    return projectionMatrix(camera_, iw, ih) * viewMatrix(camera_);
+}
+
 void Renderer::updateFrameConstants() {
     const uint32_t iw = settings_.width * settings_.supersample, ih = settings_.height * settings_.supersample;
     sh::FrameConstants f{};
-    f.viewProj = projectionMatrix(camera_, iw, ih) * viewMatrix(camera_);
+    f.viewProj = viewProjection();
     f.invViewProj = glm::inverse(f.viewProj);
     f.cameraPos = glm::vec4(glm::vec3(camera_.world[3]), 1.0f);
     f.sizes = glm::uvec4(iw, ih, lightCount_, settings_.shadowMapSize);
@@ -291,8 +296,7 @@ void Renderer::recordTemporal(VkCommandBuffer cmd) {
                                     f.temporal.surface[s.previous], s.previousViewProj, s.valid};
     const TemporalIndirectTargets out{f.diffuse, f.temporal.color[1 - s.previous], f.temporal.surface[1 - s.previous]};
     temporal_->record(cmd, tracker_, in, out, settings_.temporal, timers_.get());
-    const uint32_t iw = settings_.width * settings_.supersample, ih = settings_.height * settings_.supersample;
-    s.advance(projectionMatrix(camera_, iw, ih) * viewMatrix(camera_));
+    s.advance(viewProjection());
 }
 
 // After lights or static geometry change, feedback frames carry the voxel

@@ -153,6 +153,7 @@ private:
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
     void recordTemporal(VkCommandBuffer cmd);
+    glm::mat4 viewProjection() const;  // of the internal image (output x supersample)
     uint32_t lightSettleFrames() const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics

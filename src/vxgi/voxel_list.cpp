@@ -28,12 +28,6 @@ uint32_t voxelListMaxGroups(uint32_t slots) {
     return uint32_t(groups + sh::VOXEL_LIST_ROW);  // the last row may be partly past the end
 }
 
-glm::uvec3 voxelListDispatch(uint32_t entries) {
-    const uint32_t groups = (entries + sh::VOXEL_LIST_GROUP - 1) / sh::VOXEL_LIST_GROUP;
-    const uint32_t x = groups < sh::VOXEL_LIST_ROW ? groups : sh::VOXEL_LIST_ROW;
-    return {x, x == 0 ? 0 : (groups + x - 1) / x, 1};
-}
-
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset) {
     vkCmdDispatchIndirect(cmd, list.handle(), argsOffset);
 }

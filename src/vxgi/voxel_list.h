@@ -5,8 +5,6 @@
 
 #include <cstdint>
 
-#include <glm/glm.hpp>
-
 #include "gpu/pipeline.h"
 
 namespace dvsgi::gpu {
@@ -49,7 +47,5 @@ void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize
 uint64_t voxelListBytes(uint32_t slots);
 // Per-workgroup statistics entries that a pass over a list of `slots` entries may address.
 uint32_t voxelListMaxGroups(uint32_t slots);
-// The indirect dispatch arguments (x, y, z) over `entries` list entries.
-glm::uvec3 voxelListDispatch(uint32_t entries);
 
 }  // namespace dvsgi::vxgi

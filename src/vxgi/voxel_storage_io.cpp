@@ -26,11 +26,15 @@ int64_t slotOf(uint32_t value) {
 }
 
 template <typename T>
-std::vector<T> readAs(const gpu::Context& ctx, const gpu::Image& image) {
-    const std::vector<uint8_t> bytes = gpu::readbackImage(ctx, image, gpu::use::ComputeReadWrite);
+std::vector<T> wordsOf(const std::vector<uint8_t>& bytes) {
     std::vector<T> out(bytes.size() / sizeof(T));
     std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
     return out;
+}
+
+template <typename T>
+std::vector<T> readAs(const gpu::Context& ctx, const gpu::Image& image) {
+    return wordsOf<T>(gpu::readbackImage(ctx, image, gpu::use::ComputeReadWrite));
 }
 
 }  // namespace
@@ -38,10 +42,7 @@ std::vector<T> readAs(const gpu::Context& ctx, const gpu::Image& image) {
 DenseAttributes::DenseAttributes(uint32_t n) : n(n), data(size_t(n) * n * n * sh::VOXEL_CHANNELS, 0.0f) {}
 
 std::vector<uint32_t> readVoxelIndex(const gpu::Context& ctx, const VoxelVolumes& v) {
-    const std::vector<uint8_t> bytes = gpu::readbackBuffer(ctx, v.index);
-    std::vector<uint32_t> out(bytes.size() / sizeof(uint32_t));
-    std::memcpy(out.data(), bytes.data(), out.size() * sizeof(uint32_t));
-    return out;
+    return wordsOf<uint32_t>(gpu::readbackBuffer(ctx, v.index));
 }
 
 DenseAttributes readAttributes(const gpu::Context& ctx, const VoxelVolumes& v) {
@@ -89,8 +90,8 @@ void uploadAttributes(const gpu::Context& ctx, const VoxelVolumes& v, const Dens
     }
     sh::VoxelListHeader header{};
     header.counts = glm::uvec4(count, count, v.slots, 0);
-    header.allGroups = glm::uvec4(voxelListDispatch(count), 0);
-    header.dynamicGroups = glm::uvec4(0, 0, 1, 0);
+    header.allGroups = sh::voxelListDispatch(count);
+    header.dynamicGroups = sh::voxelListDispatch(0);
     std::memcpy(list.data(), &header, sizeof(header));
     gpu::uploadBuffer(ctx, v.index, index.data(), index.size() * sizeof(uint32_t));
     gpu::uploadImage(ctx, v.accum, slots.data(), slots.size() * sizeof(float), gpu::use::ComputeReadWrite);

@@ -4,7 +4,6 @@
 
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
-#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 
@@ -19,11 +18,7 @@ VoxelSet VoxelReadback::occupancy() const {
 
 VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes) {
     // The per-slot sums scattered back to the grid through the index.
-    vxgi::DenseAttributes dense = vxgi::readAttributes(context(), volumes);
-    VoxelReadback r;
-    r.n = dense.n;
-    r.data = std::move(dense.data);
-    return r;
+    return VoxelReadback{vxgi::readAttributes(context(), volumes)};
 }
 
 std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind>& info) {

@@ -16,18 +16,13 @@
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_list.h"
+#include "vxgi/voxel_storage_io.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::test {
 
 // The attribute sums read back per grid voxel: 13 slabs of N^3 floats stacked along z.
-struct VoxelReadback {
-    uint32_t n = 0;
-    std::vector<float> data;
-
-    float at(int x, int y, int z, uint32_t channel) const {
-        return data[(size_t(z + int(channel * n)) * n + size_t(y)) * n + size_t(x)];
-    }
+struct VoxelReadback : vxgi::DenseAttributes {
     float count(int x, int y, int z) const { return at(x, y, z, shader::CH_COUNT); }
     // Channel sum divided by the fragment count.
     float average(int x, int y, int z, uint32_t channel) const { return at(x, y, z, channel) / count(x, y, z); }

@@ -174,10 +174,8 @@ TEST_P(VoxelList, UploadedAttributesReadBackAndAreListedAsStatic) {
     rig.fullVoxelize();
     const VoxelReadback voxelized = rig.read();
     const VoxelSet occupied = voxelized.occupancy();
-    vxgi::DenseAttributes dense(kGrid.n);
-    dense.data = voxelized.data;
     vxgi::VoxelVolumes fresh(context(), kGrid);
-    vxgi::uploadAttributes(context(), fresh, dense);
+    vxgi::uploadAttributes(context(), fresh, voxelized);
     EXPECT_EQ(readVoxels(fresh).data, voxelized.data);
     const ListReadback list = readList(fresh);
     expectListMatches(list, occupied, occupied);
