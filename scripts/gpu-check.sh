@@ -105,23 +105,9 @@ else
   [ $rc -eq 0 ] || status=1
 fi
 
-# Image quality at the sizes lavapipe cannot afford (issue #15's 512x512 with
-# 128^3, and the resolution/step independence of the indirect light): EXRs and
-# metrics under quality/ for scripts/quality.sh-style comparisons elsewhere.
-mkdir -p "$out/quality"
-qrender() {  # NAME SCENE ARGS...
-  local name=$1 scene=$2
-  shift 2
-  timeout 120 "${runner[@]}" "$dvsgi" render "$shared/scenes/cornell-box/$scene.gltf" --width 512 --height 512 \
-    --png none --quiet --out "$out/quality/$name.exr" --metrics "$out/quality/$name.json" "$@" \
-    >> "$out/quality/log.txt" 2>&1 || log "quality render $name failed"
-}
-for sc in cornell-lights cornell-emissive; do
-  qrender "$sc-128" "$sc" --voxels 128
-  qrender "$sc-128-c16" "$sc" --voxels 128 --cones 16
-done
-for n in 64 128 256; do qrender "indirect-$n" cornell-lights --voxels "$n" --output indirect; done
-qrender indirect-128-beta1 cornell-lights --voxels 128 --output indirect --cone-step 1
+# Image quality at the sizes lavapipe can hardly afford (issue #15's 512x512
+# with 128^3, and the resolution/step independence of the indirect light).
+bash scripts/quality-512.sh "$out/quality" "$shared" -- "${runner[@]}" "$dvsgi" || log "a quality render failed"
 log "quality renders: $(ls "$out/quality"/*.exr 2>/dev/null | wc -l) images"
 
 if [ -n "${DVSGI_GPU_SKIP_BENCH:-}" ]; then

@@ -43,7 +43,7 @@ vec4 bounced(ivec3 v, uint slot) {
         n[a] = pos[a] >= neg[a] ? 1.0 : -1.0;
     }
     float s = grid.originSize.w;
-    // Start off the surface (one voxel by default) so the cones do not gather the voxel itself.
+    // Start off the surface (two voxels: vxgi::bounceCones) so the cones do not gather the voxel itself.
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
     vec3 E = gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);

@@ -20,7 +20,7 @@ vec3 gatherIrradiance16(vec3 origin, vec3 n, float originHeight, ConeParams para
         vec3 dir = normalize(z * n + r * (cos(phi) * t + sin(phi) * b));
         float w = PI * z / sumCos;
         float ao;
-        vec4 c = traceConeAO(origin, n, originHeight, dir, TAN_CONE16, params, aoLambda, ao);
+        vec4 c = traceConeAO(origin, n, originHeight, dir, TAN_CONE16, params, aoLambda, false, ao);
         E += w * c.rgb;
         occlusion += w * ao;
     }

@@ -5,28 +5,83 @@
 
 #include "lib/math.glsl"
 
-// Directional sample for a cone marching along unit `dir`: the three volumes
-// computed for rays travelling that way, weighted by dir^2 (sum 1). All six are
-// fetched and weighted (zero for the three facing away) so the sampling stays
-// branch-free, which is faster on lavapipe than picking volumes by branches.
-// Opacity combines as transmittance, T = prod T_i^(w_i), not as the weighted
-// mean: a wall is opaque in the volume across it and nearly transparent in the
-// two along it, and averaging let an oblique cone through it (light leaked out
-// of closed rooms, increasingly at finer grids). Colour is the weighted
-// premultiplied colour rescaled to that opacity.
-vec4 sampleDirectional(vec3 uvw, vec3 dir, float level) {
+// One directional volume's contribution at (whole) mip level `lod`, weighted
+// by w: optical depth tau and emission tau * L (L = colour / alpha). Across
+// the travel axis the hardware interpolates bilinearly in opacity (a cell's
+// alpha is the fraction of its columns that are blocked: coverage). Along the
+// axis the two cells around the sample are fetched and their optical depths
+// interpolated: opacity interpolated between an opaque cell and an empty one
+// gives a ramp whose step-corrected transmittance is e^-2, so a cone crossed a
+// one-cell wall at every mip level keeping 14 % of its light (closed rooms
+// lost light, thin walls leaked; docs/quality.md), while optical depth
+// integrates to the cell's own. The depth ramps over the middle DEPTH_RAMP of
+// the way between the cell centres: a linear ramp saturates half a cell early
+// at an opaque cell, which moved hits (ambient occlusion's distance falloff
+// was 2 % off its closed form), and stepping at the cell boundary would band.
+// The ramp reaches DEPTH_RAMP / 2 cells past an opaque cell, so cones start
+// clear of their surface: the bounce's origin is two voxels off
+// (vxgi::bounceCones), the clearance K keeps the rest.
+const float DEPTH_RAMP = 0.5;
+
+void tapDirectional(sampler3D vol, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
+    // Cells per edge at this level, from the grid rather than textureSize:
+    // lavapipe answers a size query with one lane's level for all lanes.
+    float size = max(float(grid.dims.x / 2u) * exp2(-lod), 1.0);
+    float x = uvw[axis] * size - 0.5;
+    float c = floor(x), f = clamp((x - c - 0.5) / DEPTH_RAMP + 0.5, 0.0, 1.0);
+    vec3 p0 = uvw, p1 = uvw;
+    p0[axis] = (c + 0.5) / size;
+    p1[axis] = (c + 1.5) / size;
+    vec4 a = textureLod(vol, p0, lod), b = textureLod(vol, p1, lod);
+    float ta = -log(1.0 - min(a.a, 0.9999)), tb = -log(1.0 - min(b.a, 0.9999));
+    vec3 ja = a.a > 1e-6 ? a.rgb * (ta / a.a) : vec3(0.0);
+    vec3 jb = b.a > 1e-6 ? b.rgb * (tb / b.a) : vec3(0.0);
+    acc += w * vec4(mix(ja, jb, f), mix(ta, tb, f));
+}
+
+// The three volumes facing `dir` at one whole level: their weighted optical
+// depths add, T = prod T_i^(w_i), and the radiance is the depth-weighted mean.
+// Returns premultiplied (alpha L, alpha).
+vec4 sampleFacing(vec3 uvw, vec3 dir, vec3 w, float lod) {
+    vec4 acc = vec4(0.0);
+    // Branches pick the volumes facing the direction; neighbouring cones
+    // mostly agree, so they rarely diverge.
+    if (w.x > 0.0) {
+        if (dir.x < 0.0) tapDirectional(directional[0], 0, uvw, lod, w.x, acc);
+        else tapDirectional(directional[1], 0, uvw, lod, w.x, acc);
+    }
+    if (w.y > 0.0) {
+        if (dir.y < 0.0) tapDirectional(directional[2], 1, uvw, lod, w.y, acc);
+        else tapDirectional(directional[3], 1, uvw, lod, w.y, acc);
+    }
+    if (w.z > 0.0) {
+        if (dir.z < 0.0) tapDirectional(directional[4], 2, uvw, lod, w.z, acc);
+        else tapDirectional(directional[5], 2, uvw, lod, w.z, acc);
+    }
+    if (acc.a <= 1e-6) return vec4(0.0);
+    float a = 1.0 - exp(-acc.a);
+    return vec4(acc.rgb * (a / acc.a), a);
+}
+
+// Directional sample for a cone marching along unit `dir` at mip `level`: the
+// three volumes computed for rays travelling that way, weighted by dir^2 (sum
+// 1). Optical depths add, not opacities: a wall is opaque in the volume across
+// it and nearly transparent in the two along it, and averaging opacities let
+// an oblique cone through it. Returns premultiplied (alpha L, alpha).
+// Mip levels are not blended by the hardware, which would mix opacity along
+// the axis again (a closed box's bounce fell back from 0.99 to 0.91 of the
+// light). With `blendLevels` both whole levels around `level` are sampled and
+// mixed as coverage, like the footprint they stand for (narrow specular and
+// shadow cones, whose width shows: mixing depths made a rough reflection as
+// sharp as a glossy one); without, the level is rounded, at half the cost: a
+// diffuse cone's level depends only on its distance, so rounding changes no
+// pixel against its neighbours (blending cost the voxel bounce 3x on lavapipe).
+vec4 sampleDirectional(vec3 uvw, vec3 dir, float level, bool blendLevels) {
     vec3 w = dir * dir;
-    vec3 neg = w * vec3(lessThan(dir, vec3(0.0)));
-    vec3 pos = w - neg;
-    vec4 s0 = textureLod(directional[0], uvw, level), s1 = textureLod(directional[1], uvw, level);
-    vec4 s2 = textureLod(directional[2], uvw, level), s3 = textureLod(directional[3], uvw, level);
-    vec4 s4 = textureLod(directional[4], uvw, level), s5 = textureLod(directional[5], uvw, level);
-    vec4 mean = neg.x * s0 + pos.x * s1 + neg.y * s2 + pos.y * s3 + neg.z * s4 + pos.z * s5;
-    float logT = neg.x * log(max(1.0 - s0.a, 1e-6)) + pos.x * log(max(1.0 - s1.a, 1e-6)) +
-                 neg.y * log(max(1.0 - s2.a, 1e-6)) + pos.y * log(max(1.0 - s3.a, 1e-6)) +
-                 neg.z * log(max(1.0 - s4.a, 1e-6)) + pos.z * log(max(1.0 - s5.a, 1e-6));
-    float a = 1.0 - exp(logT);
-    return mean.a > 1e-6 ? vec4(mean.rgb * (a / mean.a), a) : vec4(0.0);
+    if (!blendLevels) return sampleFacing(uvw, dir, w, floor(level + 0.5));
+    float lod = floor(level), fr = level - lod;
+    vec4 s = sampleFacing(uvw, dir, w, lod);
+    return fr > 0.0 ? mix(s, sampleFacing(uvw, dir, w, lod + 1.0), fr) : s;
 }
 
 // Front-to-back accumulation along the cone from `origin` (world) along unit
@@ -37,7 +92,9 @@ vec4 sampleDirectional(vec3 uvw, vec3 dir, float level) {
 // voxels, z maximum distance in metres, w distance of the first sample in voxels.
 // `ao` receives the occlusion weighted by f(r) = 1 / (1 + aoLambda * r), r the
 // distance in voxels: occ += (1 - occ) * alpha * f(r) (ambient occlusion).
-vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params, float aoLambda, out float ao) {
+// `blendLevels`: see sampleDirectional (the diffuse cone sets pass false).
+vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params, float aoLambda,
+                 bool blendLevels, out float ao) {
     float s = grid.originSize.w;
     float extent = s * float(grid.dims.x);
     float maxLevel = float(grid.dims.z) - 1.0;
@@ -72,7 +129,7 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         // cornell-lights converged 22 % too bright; docs/quality.md.)
         if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
         // Directional level 0 voxels are two voxels wide.
-        vec4 smp = sampleDirectional(uvw, dir, clamp(level - 1.0, 0.0, maxLevel));
+        vec4 smp = sampleDirectional(uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels);
 #ifdef CONE_USE_RADIANCE_VOLUME
         if (level < 1.0) smp = mix(textureLod(radianceVolume, uvw, 0.0), smp, level);
 #endif
@@ -96,7 +153,7 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
 
 vec4 traceCone(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params) {
     float ao;
-    return traceConeAO(origin, n, originHeight, dir, tanHalf, params, 0.0, ao);
+    return traceConeAO(origin, n, originHeight, dir, tanHalf, params, 0.0, true, ao);
 }
 
 // Cone sets over the hemisphere around n, cosine-weighted and normalized so a
@@ -121,13 +178,13 @@ vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams param
     // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
     const float wCenter = PI / 3.5, wSide = PI * 0.5 / 3.5;
     float ao;
-    vec4 c = traceConeAO(origin, n, originHeight, n, TAN_30, params, aoLambda, ao);
+    vec4 c = traceConeAO(origin, n, originHeight, n, TAN_30, params, aoLambda, false, ao);
     vec3 E = wCenter * c.rgb;
     occlusion = wCenter * ao;
     for (int i = 0; i < 5; ++i) {
         float phi = TWO_PI * float(i) / 5.0;
         vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
-        vec4 s = traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, ao);
+        vec4 s = traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, false, ao);
         E += wSide * s.rgb;
         occlusion += wSide * ao;
     }

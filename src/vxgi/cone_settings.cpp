@@ -6,7 +6,7 @@ ConeSettings bounceCones(const ConeSettings& shared, float bounceStepFactor) {
     ConeSettings c = shared;
     c.coneSet = shader::CONE_SET_6;
     c.stepFactor = bounceStepFactor;
-    c.offsetVoxels = 1.0f;
+    c.offsetVoxels = 2.0f;
     return c;
 }
 

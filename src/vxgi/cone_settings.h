@@ -22,8 +22,11 @@ struct ConeSettings {
 };
 
 // The bounce traces N^3 voxels' cones, so it takes the shared settings with its
-// own step factor, the six-cone set, and an origin one voxel off the voxel (a
-// voxel's centre already lies on its surface, unlike a pixel's G-buffer point).
+// own step factor, the six-cone set, and an origin two voxels off the voxel's
+// centre: the nearest point outside the two-voxel directional cell that holds
+// the voxel, whichever of its two voxels that is (one voxel left the origin in
+// its own wall's cell, and grazing cones lit the wall with itself: an open box
+// carried 5.7 % more light per bounce than its view factors, converged +15 %).
 ConeSettings bounceCones(const ConeSettings& shared, float bounceStepFactor);
 
 // The GPU form: the maximum distance resolved to metres on `grid`.

@@ -2,8 +2,9 @@
 // rho and emission L every wall converges to L / (1 - rho t), t the fraction
 // of light one bounce carries; with rho = 0.9 ten bounces still leave a third
 // of the light missing, so this checks that iterating to convergence reaches
-// the infinite series. A light switched off must leave no lasting indirect
-// light under feedback. A renderer whose voxel slots run out grows them and
+// the infinite series. An open box must let light escape as radiosity on the
+// CPU says. A light switched off must leave no lasting indirect light under
+// feedback. A renderer whose voxel slots run out grows them and
 // renders the same frame.
 #include <cmath>
 #include <cstdio>
@@ -63,11 +64,167 @@ TEST_F(Converge, ClosedFurnaceReachesTheInfiniteSeriesOfItsTransport) {
                 100.0 * (got / exact - 1.0));
     EXPECT_TRUE(st.converged);
     EXPECT_GT(st.bounces, 15u);  // (rho t)^15 < 0.15: far from converged before that
-    EXPECT_NEAR(got / limit, 1.0, 0.017);  // measured +1.15 %: t varies a little between bounces
-    // Measured: t = 0.889 (a bounce loses 11 % through coarse cells that
-    // straddle a wall and the empty margin behind it), so the converged wall
-    // is 49 % below L / (1 - rho); docs/quality.md. Guard against it getting worse.
-    EXPECT_GT(t, 0.85);
+    // Measured on lavapipe: t = 0.9927 on the first bounce (uniform walls) but
+    // a little less once edges and corners darken, so the converged wall is
+    // 7.0 % below L / (1 - rho t) and 12.8 % below L / (1 - rho): at rho = 0.9
+    // a bounce's transport counts ten times over. While the cone tracer
+    // interpolated opacity along the cone, t was 0.889 and the wall 49 % below
+    // L / (1 - rho) (docs/quality.md). Bounds: 1.5 times the measured losses.
+    EXPECT_GT(t, 0.989);
+    EXPECT_NEAR(got / limit, 1.0, 0.105);
+    EXPECT_GT(got / exact, 1.0 - 1.5 * 0.128);
+}
+
+// The open box: the furnace's walls with the top (+y) left out. Calls
+// f(voxel, point on the wall's plane, inward normal) for the inner voxels of
+// the five walls.
+template <typename F>
+void forEachOpenBoxWallVoxel(F&& f) {
+    const double voxel = 2.0 / kN;
+    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
+        if (v.y == kHigh) return;  // the opening
+        glm::dvec3 n(0.0);
+        glm::dvec3 p = glm::dvec3(v) * voxel + (0.5 * voxel - 1.0);
+        for (int a = 0; a < 3; ++a) {
+            if (v[a] == kLow) n[a] = 1.0;
+            if (v[a] == kHigh) n[a] = -1.0;
+            if (n[a] != 0.0) p[a] = -n[a] * kHalf;
+        }
+        f(v, p, n);
+    });
+}
+
+// Radiosity of the open box of half-size h, albedo rho and emission L on the
+// CPU: each of the five walls cut into kPatches^2 patches, point-to-point form
+// factors between patch centres, B = L + rho F B iterated to convergence.
+class OpenBoxRadiosity {
+public:
+    static constexpr int kPatches = 24;
+    OpenBoxRadiosity(double h, double rho, double L) : h_(h) {
+        for (int face = 0; face < 5; ++face)
+            for (int i = 0; i < kPatches; ++i)
+                for (int j = 0; j < kPatches; ++j) {
+                    const Patch p = patch(face, i, j);
+                    centres_.push_back(p.centre);
+                    normals_.push_back(p.normal);
+                }
+        const size_t n = centres_.size();
+        const double area = std::pow(2.0 * h / kPatches, 2.0);
+        std::vector<double> F(n * n, 0.0);
+        for (size_t a = 0; a < n; ++a)
+            for (size_t b = 0; b < n; ++b) {
+                const glm::dvec3 d = centres_[b] - centres_[a];
+                const double r2 = glm::dot(d, d);
+                const double ca = glm::dot(normals_[a], d), cb = -glm::dot(normals_[b], d);
+                if (ca > 0.0 && cb > 0.0) F[a * n + b] = ca * cb / (glm::pi<double>() * r2 * r2) * area;
+            }
+        B_.assign(n, L);
+        for (int it = 0; it < 400; ++it) {
+            std::vector<double> next(n, L);
+            for (size_t a = 0; a < n; ++a)
+                for (size_t b = 0; b < n; ++b) next[a] += rho * F[a * n + b] * B_[b];
+            B_.swap(next);
+        }
+    }
+    // Radiance at point p on the wall of inward normal n: its patch's value.
+    double at(glm::dvec3 p, glm::dvec3 n) const {
+        double best = 1e30, value = 0.0;
+        for (size_t a = 0; a < centres_.size(); ++a)
+            if (glm::dot(normals_[a], n) > 0.5) {
+                const double d = glm::length(centres_[a] - p);
+                if (d < best) best = d, value = B_[a];
+            }
+        return value;
+    }
+
+private:
+    struct Patch {
+        glm::dvec3 centre, normal;
+    };
+    // Faces: inward normals +x, -x, +y (the floor), +z, -z.
+    Patch patch(int face, int i, int j) const {
+        static const glm::dvec3 normals[5] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}};
+        const glm::dvec3 n = normals[face];
+        const int axis = n.x != 0.0 ? 0 : (n.y != 0.0 ? 1 : 2);
+        const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+        const double cell = 2.0 * h_ / kPatches;
+        glm::dvec3 c(0.0);
+        c[axis] = -n[axis] * h_;
+        c[u] = -h_ + (i + 0.5) * cell;
+        c[w] = -h_ + (j + 0.5) * cell;
+        return {c, n};
+    }
+    double h_;
+    std::vector<glm::dvec3> centres_, normals_;
+    std::vector<double> B_;
+};
+
+// Cosine-weighted view factor from point p (unit normal n) to the open top.
+double viewFactorToTop(glm::dvec3 p, glm::dvec3 n, double h) {
+    constexpr int kSteps = 96;
+    const double cell = 2.0 * h / kSteps;
+    double f = 0.0;
+    for (int i = 0; i < kSteps; ++i)
+        for (int j = 0; j < kSteps; ++j) {
+            const glm::dvec3 q(-h + (i + 0.5) * cell, h, -h + (j + 0.5) * cell);
+            const glm::dvec3 d = q - p;
+            const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+            const double cosP = glm::dot(n, d) / r, cosQ = d.y / r;  // the opening faces -y
+            if (cosP > 0.0) f += cosP * cosQ / (glm::pi<double>() * r2) * cell * cell;
+        }
+    return f;
+}
+
+// An open box must let light escape: one bounce carries, at each wall voxel,
+// the fraction of its hemisphere that sees walls, 1 - F(opening), and the
+// converged walls match radiosity. Light that leaves through the opening does
+// not come back (the grid's transparent border).
+TEST_F(Converge, OpenBoxLetsLightEscapeAsRadiosityDoes) {
+    constexpr float kRho = 0.9f, kL = 1.0f;
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf, true);
+    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    render::RenderSettings one = boxSettings();
+    one.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    one.voxelLight.bounces = 1;
+    render::Renderer r1(context(), s, one);
+    r1.renderFrame();
+    const Rgba16Volume radiance = readRgba16(r1.volumes()->radiance);
+    double got = 0.0, want = 0.0;
+    int count = 0;
+    forEachOpenBoxWallVoxel([&](glm::ivec3 v, glm::dvec3 p, glm::dvec3 n) {
+        got += (radiance.at(v.x, v.y, v.z).r / kL - 1.0) / kRho;
+        want += 1.0 - viewFactorToTop(p, n, kHalf);
+        ++count;
+    });
+    got /= count;
+    want /= count;
+    std::printf("  one bounce carries t = %.4f over the open box's walls; view factors give %.4f (%+.1f%%)\n", got,
+                want, 100.0 * (got / want - 1.0));
+    // Measured on lavapipe: +1.8 % (six cones cannot resolve the opening's
+    // edge better), converged -2.1 %; bounds 1.5 times that.
+    EXPECT_NEAR(got / want, 1.0, 0.027);
+    // Converged, against radiosity on the CPU: the five walls cut into
+    // kPatches^2 patches each, point-to-point form factors, B = E + rho F B.
+    render::RenderSettings conv = boxSettings();
+    conv.voxelLight.bounceMode = vxgi::BounceMode::Converge;
+    conv.voxelLight.convergence = 0.001f;
+    conv.voxelLight.maxBounces = 200;
+    render::Renderer rc(context(), s, conv);
+    rc.renderFrame();
+    const Rgba16Volume converged = readRgba16(rc.volumes()->radiance);
+    const OpenBoxRadiosity truth(kHalf, kRho, kL);
+    double gotC = 0.0, wantC = 0.0;
+    count = 0;
+    forEachOpenBoxWallVoxel([&](glm::ivec3 v, glm::dvec3 p, glm::dvec3 n) {
+        gotC += converged.at(v.x, v.y, v.z).r;
+        wantC += truth.at(p, n);
+        ++count;
+    });
+    gotC /= count;
+    wantC /= count;
+    std::printf("  converged wall radiance %.4f, radiosity %.4f (%+.1f%%)\n", gotC, wantC, 100.0 * (gotC / wantC - 1.0));
+    EXPECT_NEAR(gotC / wantC, 1.0, 0.032);
 }
 
 TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {

@@ -70,10 +70,11 @@ UnusedShadowMap::UnusedShadowMap() {
         [&](VkCommandBuffer cmd) { gpu::transition(cmd, map, gpu::use::Undefined, gpu::use::ShaderRead); });
 }
 
-void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h) {
+void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h, bool openTop) {
     const glm::vec3 up(0, 1, 0);
     const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (const glm::vec3& n : normals) {
+        if (openTop && n.y < -0.5f) continue;
         // A face with inward normal n sits on the side -n of the centre.
         const glm::quat r = n.y < -0.5f ? glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)) : glm::rotation(up, n);
         addQuad(s, material, center - n * h, h, r);

@@ -75,7 +75,8 @@ void forEachWallVoxel(int low, int high, int innerLo, int innerHi, F&& f) {
 // An 8x8 image over an N^3 grid on the box [-1, 1]^3 (the furnace tests).
 render::RenderSettings unitBoxGridSettings(uint32_t n, uint32_t shadowMapSize = 64);
 
-// Six inward-facing quads (addQuad) of half-size h around `center`.
-void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h);
+// Six inward-facing quads (addQuad) of half-size h around `center`; with
+// `openTop` the face at +y (inward normal -y) is left out.
+void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h, bool openTop = false);
 
 }  // namespace dvsgi::test
