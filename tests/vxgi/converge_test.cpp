@@ -34,21 +34,33 @@ double wallMean(const Rgba16Volume& v, int channel = 0) {
     return sum / count;
 }
 
+// A box of emissive walls of albedo rho and emission L (the furnace); with
+// openTop its +y face is left out.
+scene::Scene emissiveBox(float rho, float L, bool openTop = false) {
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(rho), glm::vec3(L)), glm::vec3(0.0f), kHalf, openTop);
+    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    return s;
+}
+
+// The radiance volume after one frame with exactly one voxel bounce.
+Rgba16Volume radianceAfterOneBounce(const scene::Scene& s) {
+    render::RenderSettings one = boxSettings();
+    one.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    one.voxelLight.bounces = 1;
+    render::Renderer r(context(), s, one);
+    r.renderFrame();
+    return readRgba16(r.volumes()->radiance);
+}
+
 class Converge : public GpuTest {};
 
 TEST_F(Converge, ClosedFurnaceReachesTheInfiniteSeriesOfItsTransport) {
     constexpr float kRho = 0.9f, kL = 1.0f;
-    scene::Scene s;
-    addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf);
-    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    const scene::Scene s = emissiveBox(kRho, kL);
     // One bounce measures what fraction t of the light a bounce carries here
     // (L + rho t L); converging must then reach the series' limit L / (1 - rho t).
-    render::RenderSettings one = boxSettings();
-    one.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-    one.voxelLight.bounces = 1;
-    render::Renderer r1(context(), s, one);
-    r1.renderFrame();
-    const double t = (wallMean(readRgba16(r1.volumes()->radiance)) / kL - 1.0) / kRho;
+    const double t = (wallMean(radianceAfterOneBounce(s)) / kL - 1.0) / kRho;
 
     render::RenderSettings rs = boxSettings();
     rs.voxelLight.bounceMode = vxgi::BounceMode::Converge;
@@ -181,15 +193,8 @@ double viewFactorToTop(glm::dvec3 p, glm::dvec3 n, double h) {
 // not come back (the grid's transparent border).
 TEST_F(Converge, OpenBoxLetsLightEscapeAsRadiosityDoes) {
     constexpr float kRho = 0.9f, kL = 1.0f;
-    scene::Scene s;
-    addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf, true);
-    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
-    render::RenderSettings one = boxSettings();
-    one.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-    one.voxelLight.bounces = 1;
-    render::Renderer r1(context(), s, one);
-    r1.renderFrame();
-    const Rgba16Volume radiance = readRgba16(r1.volumes()->radiance);
+    const scene::Scene s = emissiveBox(kRho, kL, true);
+    const Rgba16Volume radiance = radianceAfterOneBounce(s);
     double got = 0.0, want = 0.0;
     int count = 0;
     forEachOpenBoxWallVoxel([&](glm::ivec3 v, glm::dvec3 p, glm::dvec3 n) {
