@@ -69,12 +69,13 @@ TEST_F(ConeTracing, UniformlyEmissiveEnclosureGivesRhoL) {
         const double mean = sum / (24.0 * 24.0);
         std::printf("cones %u: mean indirect %.4f (expected %.4f), max relative error %.3f\n", cones, mean, rho * L,
                     maxErr);
-        // Measured (outside the grid is empty, 4-voxel margin): means 2.3 % and
-        // 5.2 % low for 6 and 16 cones, worst pixels 3.9 % and 6.3 %: light leaks
-        // through coarse cells straddling the walls (docs/quality.md). Bounds 1.5x.
+        // Measured (outside the grid is empty, 4-voxel margin): means 0.9 % and
+        // 1.8 % low for 6 and 16 cones, worst pixels 3.6 % and 2.9 % (2.3 % and
+        // 5.2 % low while cones leaked through coarse cells straddling the
+        // walls; docs/quality.md). Bounds 1.5x.
         const bool six = cones == sh::CONE_SET_6;
-        EXPECT_NEAR(mean, rho * L, (six ? 0.035 : 0.078) * rho * L) << "cone set " << cones;
-        EXPECT_LT(maxErr, six ? 0.059 : 0.095) << "cone set " << cones;
+        EXPECT_NEAR(mean, rho * L, (six ? 0.013 : 0.027) * rho * L) << "cone set " << cones;
+        EXPECT_LT(maxErr, six ? 0.054 : 0.044) << "cone set " << cones;
     }
 }
 
