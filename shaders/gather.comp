@@ -65,7 +65,7 @@ void main() {
     vec3 specular = vec3(0.0);
     if (pc.flags.y != 0u && isGlossy(metallic, roughness)) {
         vec3 R = reflect(-V, N);
-        vec4 c = traceCone(origin, N, originHeight, R, specularTanHalf(roughness), pc.cone);
+        vec4 c = traceCone(origin, N, originHeight, R, specularTanHalf(roughness), pc.cone, true);
         vec3 F0 = mix(vec3(0.04), base.rgb, metallic);
         float NoV = max(dot(N, V), 0.0);
         specular = (F0 + (1.0 - F0) * pow(1.0 - NoV, 5.0)) * c.rgb;

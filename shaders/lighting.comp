@@ -37,7 +37,7 @@ float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     p.trace.z = min(dist, p.trace.z);
     float originHeight = pc.cone.surface.z * grid.originSize.w;
     vec3 origin = P + N * originHeight;
-    return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p).a;
+    return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p, true).a;
 }
 
 float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
@@ -57,7 +57,9 @@ float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emit
     float reach = length(toEmitter);
     p.trace.z = min(reach - footprint / cosE, p.trace.z);
     if (p.trace.z <= 0.0) return 1.0;
-    return 1.0 - traceCone(origin, N, originHeight, toEmitter / reach, tanHalf, p).a;
+    // Visibility only, for up to --emitter-patches cones per pixel: whole
+    // levels (rounded) at half the cost of blending two.
+    return 1.0 - traceCone(origin, N, originHeight, toEmitter / reach, tanHalf, p, false).a;
 }
 
 void main() {

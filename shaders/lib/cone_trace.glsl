@@ -151,9 +151,10 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
     return acc;
 }
 
-vec4 traceCone(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params) {
+vec4 traceCone(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params,
+               bool blendLevels) {
     float ao;
-    return traceConeAO(origin, n, originHeight, dir, tanHalf, params, 0.0, true, ao);
+    return traceConeAO(origin, n, originHeight, dir, tanHalf, params, 0.0, blendLevels, ao);
 }
 
 // Cone sets over the hemisphere around n, cosine-weighted and normalized so a
