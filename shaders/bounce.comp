@@ -25,7 +25,6 @@ layout(push_constant) uniform Push { BouncePush pc; };
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
 #include "lib/cone_trace.glsl"
-#include "lib/voxel_list.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 
 const uint GROUP_SIZE = VOXEL_LIST_GROUP;

@@ -17,7 +17,6 @@ layout(set = 0, binding = BIND_CLEAR_DIRECT, rgba16f) uniform writeonly image3D 
 layout(set = 0, binding = BIND_CLEAR_RADIANCE, rgba16f) uniform writeonly image3D radiance;
 VOXEL_INDEX_BLOCK(BIND_CLEAR_INDEX, );
 
-#include "lib/voxel_list.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 #include "lib/voxel_index.glsl"
 

@@ -31,7 +31,6 @@ layout(push_constant) uniform Push { VoxelLightPush pc; };
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
 #include "lib/voxel_trace.glsl"
-#include "lib/voxel_list.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 
 

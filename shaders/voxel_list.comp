@@ -11,7 +11,6 @@ layout(set = 0, binding = BIND_LIST_GRID) uniform Grid { VoxelGrid grid; };
 VOXEL_LIST_BLOCK(BIND_LIST_BUFFER, coherent);
 layout(push_constant) uniform Push { VoxelListPush pc; };
 
-#include "lib/voxel_list.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 
 void main() {

@@ -45,7 +45,6 @@ layout(push_constant) uniform Push { VoxelizeComputePush pc; };
 #define MATERIAL_EXPLICIT_LOD
 #include "lib/material.glsl"
 #include "lib/triangle_box.glsl"
-#include "lib/voxel_list.glsl"
 #include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
 

@@ -17,7 +17,6 @@ layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textu
 layout(push_constant) uniform Push { VoxelizePush pc; };
 
 #include "lib/material.glsl"
-#include "lib/voxel_list.glsl"
 #include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
 

@@ -2,7 +2,7 @@
 // store exactly the same sums. Needs `grid` (VoxelGrid), `accum` (r32f
 // image3D, coherent) and the index (VOXEL_INDEX_BLOCK, coherent) declared by
 // the including shader, the occupied-voxel list `list` (writable),
-// lib/voxel_list.glsl and lib/voxel_index.glsl, and GL_EXT_shader_atomic_float.
+// lib/voxel_index.glsl, and GL_EXT_shader_atomic_float.
 
 // The voxel's index value, claiming a slot when the voxel is empty: the
 // invocation whose compare-and-swap finds 0 locks the voxel, takes the next

@@ -49,6 +49,13 @@ DVSGI_CONST(uint, VOXEL_INDEX_FULL, 0x7FFFFFFFu);
 // Reads of a locked index before a waiting invocation gives up (claimVoxel).
 DVSGI_CONST(uint, VOXEL_CLAIM_SPINS, 1u << 20);
 
+// slot + 1 of an index value, or 0 for an empty voxel (and for the locked and
+// overflow values, which own no slot).
+DVSGI_FUNCTION uint indexSlot(uint value) {
+    uint slot = value & VOXEL_INDEX_SLOT_MASK;
+    return slot == VOXEL_INDEX_FULL ? 0u : slot;
+}
+
 struct VoxelGrid {
     vec4 originSize;  // xyz world position of the grid's minimum corner, w voxel edge (m)
     uvec4 dims;       // x N (voxels per edge), y channels, z mip count of the directional volumes, w slot capacity

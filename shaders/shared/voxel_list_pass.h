@@ -27,6 +27,16 @@ DVSGI_CONST(uint, VOXEL_LIST_GROUP, 64);
 DVSGI_CONST(uint, VOXEL_LIST_ROW, 4096);
 DVSGI_CONST(uint, VOXEL_LIST_COORD_BITS, 10);  // N <= 1024
 
+// A list entry: the voxel's coordinates packed into one word.
+DVSGI_FUNCTION uint packVoxel(ivec3 v) {
+    return uint(v.x) | (uint(v.y) << VOXEL_LIST_COORD_BITS) | (uint(v.z) << (2u * VOXEL_LIST_COORD_BITS));
+}
+
+DVSGI_FUNCTION ivec3 unpackVoxel(uint e) {
+    uint mask = (1u << VOXEL_LIST_COORD_BITS) - 1u;
+    return ivec3(int(e & mask), int((e >> VOXEL_LIST_COORD_BITS) & mask), int(e >> (2u * VOXEL_LIST_COORD_BITS)));
+}
+
 // The indirect dispatch arguments (x, y, z) over `entries` list entries, for
 // voxel_list.comp and for lists the host uploads.
 DVSGI_FUNCTION uvec4 voxelListDispatch(uint entries) {

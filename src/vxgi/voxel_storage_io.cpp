@@ -20,10 +20,7 @@ namespace {
 namespace sh = dvsgi::shader;
 
 // The slot of an index value, or -1 for an empty voxel.
-int64_t slotOf(uint32_t value) {
-    const uint32_t slot1 = value & sh::VOXEL_INDEX_SLOT_MASK;
-    return slot1 == 0 || slot1 == sh::VOXEL_INDEX_FULL ? -1 : int64_t(slot1) - 1;
-}
+int64_t slotOf(uint32_t value) { return int64_t(sh::indexSlot(value)) - 1; }
 
 template <typename T>
 std::vector<T> wordsOf(const std::vector<uint8_t>& bytes) {
@@ -84,8 +81,7 @@ void uploadAttributes(const gpu::Context& ctx, const VoxelVolumes& v, const Dens
                                      " slots");
         for (uint32_t c = 0; c < sh::VOXEL_CHANNELS; ++c) slots[size_t(c) * v.slots + count] = a.data[c * n3 + i];
         index[i] = (count + 1) | sh::VOXEL_INDEX_STATIC;
-        const uint32_t x = uint32_t(i % a.n), y = uint32_t(i / a.n % a.n), z = uint32_t(i / (size_t(a.n) * a.n));
-        list.push_back(x | y << sh::VOXEL_LIST_COORD_BITS | z << (2 * sh::VOXEL_LIST_COORD_BITS));
+        list.push_back(sh::packVoxel(glm::ivec3(i % a.n, i / a.n % a.n, i / (size_t(a.n) * a.n))));
         ++count;
     }
     sh::VoxelListHeader header{};

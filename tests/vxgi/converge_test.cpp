@@ -35,7 +35,7 @@ double wallMean(const Rgba16Volume& v, int channel = 0) {
     return sum / count;
 }
 
-// A box of emissive walls of albedo rho and emission L (the furnace); with
+// A box of walls of albedo rho emitting L (the furnace; L = 0: a plain box); with
 // openTop its +y face is left out.
 scene::Scene emissiveBox(float rho, float L, bool openTop = false) {
     scene::Scene s;
@@ -107,6 +107,15 @@ void forEachOpenBoxWallVoxel(F&& f) {
     });
 }
 
+// Form factor from point p (unit normal np) to a small patch of area `area`
+// at q (unit normal nq): cos cos / (pi r^2) times the area, 0 facing away.
+double formFactor(glm::dvec3 p, glm::dvec3 np, glm::dvec3 q, glm::dvec3 nq, double area) {
+    const glm::dvec3 d = q - p;
+    const double r2 = glm::dot(d, d);
+    const double cosP = glm::dot(np, d), cosQ = -glm::dot(nq, d);  // both times r
+    return cosP > 0.0 && cosQ > 0.0 ? cosP * cosQ / (glm::pi<double>() * r2 * r2) * area : 0.0;
+}
+
 // Radiosity of the open box of half-size h, albedo rho and emission L on the
 // CPU: each of the five walls cut into kPatches^2 patches, point-to-point form
 // factors between patch centres, B = L + rho F B iterated to convergence.
@@ -125,12 +134,7 @@ public:
         const double area = std::pow(2.0 * h / kPatches, 2.0);
         std::vector<double> F(n * n, 0.0);
         for (size_t a = 0; a < n; ++a)
-            for (size_t b = 0; b < n; ++b) {
-                const glm::dvec3 d = centres_[b] - centres_[a];
-                const double r2 = glm::dot(d, d);
-                const double ca = glm::dot(normals_[a], d), cb = -glm::dot(normals_[b], d);
-                if (ca > 0.0 && cb > 0.0) F[a * n + b] = ca * cb / (glm::pi<double>() * r2 * r2) * area;
-            }
+            for (size_t b = 0; b < n; ++b) F[a * n + b] = formFactor(centres_[a], normals_[a], centres_[b], normals_[b], area);
         B_.assign(n, L);
         for (int it = 0; it < 400; ++it) {
             std::vector<double> next(n, L);
@@ -172,19 +176,16 @@ private:
     std::vector<double> B_;
 };
 
-// Cosine-weighted view factor from point p (unit normal n) to the open top.
+// Cosine-weighted view factor from point p (unit normal n) to the open top
+// (which faces -y), by the midpoint rule.
 double viewFactorToTop(glm::dvec3 p, glm::dvec3 n, double h) {
     constexpr int kSteps = 96;
     const double cell = 2.0 * h / kSteps;
     double f = 0.0;
     for (int i = 0; i < kSteps; ++i)
-        for (int j = 0; j < kSteps; ++j) {
-            const glm::dvec3 q(-h + (i + 0.5) * cell, h, -h + (j + 0.5) * cell);
-            const glm::dvec3 d = q - p;
-            const double r2 = glm::dot(d, d), r = std::sqrt(r2);
-            const double cosP = glm::dot(n, d) / r, cosQ = d.y / r;  // the opening faces -y
-            if (cosP > 0.0) f += cosP * cosQ / (glm::pi<double>() * r2) * cell * cell;
-        }
+        for (int j = 0; j < kSteps; ++j)
+            f += formFactor(p, n, glm::dvec3(-h + (i + 0.5) * cell, h, -h + (j + 0.5) * cell), glm::dvec3(0, -1, 0),
+                            cell * cell);
     return f;
 }
 
@@ -235,9 +236,7 @@ TEST_F(Converge, OpenBoxLetsLightEscapeAsRadiosityDoes) {
 
 TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
     constexpr float kRho = 0.5f;
-    scene::Scene s;
-    addInwardBox(s, addMaterial(s, glm::vec3(kRho)), glm::vec3(0.0f), kHalf);
-    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    scene::Scene s = emissiveBox(kRho, 0.0f);
     scene::Light light;
     light.name = "lamp";
     light.type = scene::LightType::Point;

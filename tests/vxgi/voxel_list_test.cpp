@@ -35,12 +35,10 @@ ListReadback readList(const vxgi::VoxelVolumes& volumes) {
     ListReadback r;
     std::memcpy(&r.header, bytes.data(), sizeof(r.header));
     const uint32_t count = std::min(r.header.counts.x, r.header.counts.z);
-    const uint32_t mask = (1u << sh::VOXEL_LIST_COORD_BITS) - 1u;
     for (uint32_t i = 0; i < count; ++i) {
         uint32_t e;
         std::memcpy(&e, bytes.data() + sizeof(r.header) + size_t(i) * 4, 4);
-        r.entries.emplace_back(int(e & mask), int((e >> sh::VOXEL_LIST_COORD_BITS) & mask),
-                               int(e >> (2 * sh::VOXEL_LIST_COORD_BITS)));
+        r.entries.push_back(sh::unpackVoxel(e));
     }
     return r;
 }
