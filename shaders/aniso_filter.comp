@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/aniso_filter_pass.h"
+#include "shared/voxel_data.h"
 
 // Anisotropic filtering (paper section VII). Each target voxel covers 2x2x2
 // source voxels. For each of the six travel directions, the four child columns
@@ -11,19 +12,19 @@
 layout(local_size_x = ANISO_GROUP, local_size_y = ANISO_GROUP, local_size_z = ANISO_GROUP) in;
 
 layout(set = 0, binding = BIND_ANISO_SOURCE, rgba16f) uniform readonly image3D source;
-layout(set = 0, binding = BIND_ANISO_SOURCE_DIRS, rgba16f) uniform readonly image3D sourceDirs[6];
-layout(set = 0, binding = BIND_ANISO_TARGET_DIRS, rgba16f) uniform writeonly image3D targetDirs[6];
+layout(set = 0, binding = BIND_ANISO_SOURCE_DIRS, rgba16f) uniform readonly image3D sourceDirs;
+layout(set = 0, binding = BIND_ANISO_TARGET_DIRS, rgba16f) uniform writeonly image3D targetDirs;
 layout(push_constant) uniform Push { AnisoPush pc; };
 
 vec4 child(uint dir, ivec3 p) {
-    return pc.sizes.y != 0u ? imageLoad(source, p) : imageLoad(sourceDirs[dir], p);
+    return pc.sizes.y != 0u ? imageLoad(source, p) : imageLoad(sourceDirs, directionalTexel(dir, p, 2 * int(pc.sizes.x)));
 }
 
 void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(v, ivec3(pc.sizes.x)))) return;
     ivec3 base = v * 2;
-    for (uint dir = 0u; dir < 6u; ++dir) {
+    for (uint dir = 0u; dir < DIRECTIONAL_VOLUMES; ++dir) {
         int axis = int(dir / 2u);
         // Travelling toward -axis (even dir) the ray enters the +axis child first.
         int frontOffset = (dir % 2u == 0u) ? 1 : 0;
@@ -38,6 +39,6 @@ void main() {
                 vec4 f = child(dir, base + front), k = child(dir, base + back);
                 sum += f + k * (1.0 - f.a);
             }
-        imageStore(targetDirs[dir], v, sum * 0.25);
+        imageStore(targetDirs, directionalTexel(dir, v, int(pc.sizes.x)), sum * 0.25);
     }
 }

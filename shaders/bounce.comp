@@ -14,7 +14,7 @@
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
-layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional[6];
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional;
 layout(set = 0, binding = BIND_BOUNCE_ACCUM, r32f) uniform readonly image3D accum;
 layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D direct;
 layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;

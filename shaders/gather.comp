@@ -14,7 +14,7 @@ layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;
 
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceVolume;
-layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional[6];
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional;
 layout(set = 0, binding = BIND_GATHER_FRAME) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = BIND_GATHER_BASE) uniform sampler2D gBase;
 layout(set = 0, binding = BIND_GATHER_NORMAL) uniform sampler2D gNormal;

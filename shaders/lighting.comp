@@ -22,7 +22,7 @@ layout(set = 0, binding = BIND_LIGHT_SHADOW_MAP) uniform sampler2DArrayShadow sh
 layout(set = 0, binding = BIND_LIGHT_OUT_DIRECT, rgba32f) uniform writeonly image2D outDirect;
 layout(set = 0, binding = BIND_LIGHT_VOXEL_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_LIGHT_VOXEL_RADIANCE) uniform sampler3D radianceVolume;
-layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directional[6];
+layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directional;
 layout(set = 0, binding = BIND_LIGHT_OUT_SHADOW, r16f) uniform writeonly image2D outShadow;
 
 layout(push_constant) uniform Push { LightingPush pc; };

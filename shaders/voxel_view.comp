@@ -21,19 +21,21 @@ layout(push_constant) uniform Push { VoxelViewPush pc; };
 #include "lib/voxel_attributes.glsl"
 #include "lib/voxel_index.glsl"
 
-bool occupied(ivec3 v, uint mode) {
+vec4 directionalAt(ivec3 v, int size) { return imageLoad(directional, directionalTexel(pc.direction.x, v, size)); }
+
+bool occupied(ivec3 v, uint mode, int size) {
     if (mode == VIEW_RADIANCE) return imageLoad(radiance, v).a > 0.0;
-    if (mode == VIEW_DIRECTIONAL) return imageLoad(directional, v).a > 0.0;
+    if (mode == VIEW_DIRECTIONAL) return directionalAt(v, size).a > 0.0;
     return voxelOccupied(v);
 }
 
-vec3 value(ivec3 v, uint mode) {
+vec3 value(ivec3 v, uint mode, int size) {
     uint slot = voxelSlotAt(v) - 1u;  // occupied() held
     if (mode == VIEW_ALBEDO) return voxelAlbedo(slot);
     if (mode == VIEW_NORMAL) return voxelNormal(slot) * 0.5 + 0.5;
     if (mode == VIEW_EMISSION) return voxelEmission(slot);
     if (mode == VIEW_RADIANCE) return imageLoad(radiance, v).rgb;
-    return imageLoad(directional, v).rgb;
+    return directionalAt(v, size).rgb;
 }
 
 void main() {
@@ -65,8 +67,8 @@ void main() {
             axis = tn.x >= tn.y && tn.x >= tn.z ? 0 : (tn.y >= tn.z ? 1 : 2);
         }
         for (int i = 0; i < 3 * size; ++i) {
-            if (occupied(v, mode)) {
-                color = value(v, mode) * (axis == 0 ? 0.8 : (axis == 1 ? 1.0 : 0.9));
+            if (occupied(v, mode, size)) {
+                color = value(v, mode, size) * (axis == 0 ? 0.8 : (axis == 1 ? 1.0 : 0.9));
                 break;
             }
             if (tMax.x < tMax.y && tMax.x < tMax.z) { v.x += stepDir.x; tMax.x += tDelta.x; axis = 0; }

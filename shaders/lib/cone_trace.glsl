@@ -1,6 +1,6 @@
 // The one cone tracer of dvsgi (paper section VIII), used by the voxel bounce
-// and the per-pixel gather. Needs `grid` (VoxelGrid) and `directional[6]`
-// (sampler3D, order -X +X -Y +Y -Z +Z); with CONE_USE_RADIANCE_VOLUME also
+// and the per-pixel gather. Needs `grid` (VoxelGrid) and `directional`
+// (sampler3D: the six volumes' atlas, shared/voxel_data.h); with CONE_USE_RADIANCE_VOLUME also
 // `radianceVolume` (sampler3D), blended in for cone diameters of 1-2 voxels.
 
 #include "lib/math.glsl"
@@ -23,7 +23,18 @@
 // (vxgi::bounceCones), the clearance K keeps the rest.
 const float DEPTH_RAMP = 0.5;
 
-void tapDirectional(sampler3D vol, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
+// Volume `face` at uvw (of that volume) in the atlas, as if it had its own
+// image with the sampler's transparent border: x stays inside the volume (the
+// filter never reaches into the neighbouring one), and within half a cell of
+// its edge the result fades toward the empty border as the filter would have.
+vec4 fetchVolume(uint face, vec3 uvw, float size, float lod) {
+    float x = uvw.x * size;
+    float inside = clamp(min(x + 0.5, size + 0.5 - x), 0.0, 1.0);
+    uvw.x = (float(face) * size + clamp(x, 0.5, size - 0.5)) / (size * float(DIRECTIONAL_VOLUMES));
+    return inside * textureLod(directional, uvw, lod);
+}
+
+void tapDirectional(uint face, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
     // Cells per edge at this level, from the grid rather than textureSize:
     // lavapipe answers a size query with one lane's level for all lanes.
     float size = max(float(grid.dims.x / 2u) * exp2(-lod), 1.0);
@@ -32,7 +43,7 @@ void tapDirectional(sampler3D vol, int axis, vec3 uvw, float lod, float w, inout
     vec3 p0 = uvw, p1 = uvw;
     p0[axis] = (c + 0.5) / size;
     p1[axis] = (c + 1.5) / size;
-    vec4 a = textureLod(vol, p0, lod), b = textureLod(vol, p1, lod);
+    vec4 a = fetchVolume(face, p0, size, lod), b = fetchVolume(face, p1, size, lod);
     float ta = -log(1.0 - min(a.a, 0.9999)), tb = -log(1.0 - min(b.a, 0.9999));
     vec3 ja = a.a > 1e-6 ? a.rgb * (ta / a.a) : vec3(0.0);
     vec3 jb = b.a > 1e-6 ? b.rgb * (tb / b.a) : vec3(0.0);
@@ -41,18 +52,16 @@ void tapDirectional(sampler3D vol, int axis, vec3 uvw, float lod, float w, inout
 
 // The three volumes facing `dir` at one whole level: their weighted optical
 // depths add, T = prod T_i^(w_i), and the radiance is the depth-weighted mean.
-// Returns premultiplied (alpha L, alpha). All six are fetched and weighted
-// (zero for the three facing away): picking them by branches made the Cornell
-// 128^3 frame 20-30 % slower on lavapipe (docs/quality.md).
+// Returns premultiplied (alpha L, alpha). The volume for each axis is picked by
+// index into the atlas (the -axis volume, or the next one for dir >= 0), so
+// only the three facing volumes are fetched, with no branch (llvmpipe runs
+// divergent branches both ways).
 vec4 sampleFacing(vec3 uvw, vec3 dir, vec3 w, float lod) {
     vec4 acc = vec4(0.0);
-    vec3 neg = w * vec3(lessThan(dir, vec3(0.0))), pos = w - neg;
-    tapDirectional(directional[0], 0, uvw, lod, neg.x, acc);
-    tapDirectional(directional[1], 0, uvw, lod, pos.x, acc);
-    tapDirectional(directional[2], 1, uvw, lod, neg.y, acc);
-    tapDirectional(directional[3], 1, uvw, lod, pos.y, acc);
-    tapDirectional(directional[4], 2, uvw, lod, neg.z, acc);
-    tapDirectional(directional[5], 2, uvw, lod, pos.z, acc);
+    uvec3 face = uvec3(0u, 2u, 4u) + uvec3(greaterThanEqual(dir, vec3(0.0)));
+    tapDirectional(face.x, 0, uvw, lod, w.x, acc);
+    tapDirectional(face.y, 1, uvw, lod, w.y, acc);
+    tapDirectional(face.z, 2, uvw, lod, w.z, acc);
     if (acc.a <= 1e-6) return vec4(0.0);
     float a = 1.0 - exp(-acc.a);
     return vec4(acc.rgb * (a / acc.a), a);

@@ -7,11 +7,11 @@
 
 DVSGI_BEGIN
 
-// Anisotropic filtering: radiance (N^3) -> six directional volumes ((N/2)^3 + mips).
-// Directions, in volume order: -X +X -Y +Y -Z +Z (the direction light travels).
+// Anisotropic filtering: radiance (N^3) -> the six directional volumes ((N/2)^3
+// + mips each, side by side in one image: voxel_data.h, directionalTexel).
 DVSGI_CONST(uint, BIND_ANISO_SOURCE, 0);      // base: radiance; upper levels: unused
-DVSGI_CONST(uint, BIND_ANISO_SOURCE_DIRS, 1); // upper levels: six volumes at level l (array of 6)
-DVSGI_CONST(uint, BIND_ANISO_TARGET_DIRS, 2); // six volumes at the level written (array of 6)
+DVSGI_CONST(uint, BIND_ANISO_SOURCE_DIRS, 1); // upper levels: the volumes' level l - 1
+DVSGI_CONST(uint, BIND_ANISO_TARGET_DIRS, 2); // the volumes' level written
 
 struct AnisoPush {
     uvec4 sizes;  // x target size (voxels per edge), y 1 = base level (read radiance)

@@ -20,7 +20,7 @@ DVSGI_CONST(uint, BIND_LIGHT_SHADOW_MAP, 7);
 DVSGI_CONST(uint, BIND_LIGHT_OUT_DIRECT, 8);
 DVSGI_CONST(uint, BIND_LIGHT_VOXEL_GRID, 9);         // shadow cones trace the voxel volumes
 DVSGI_CONST(uint, BIND_LIGHT_VOXEL_RADIANCE, 10);
-DVSGI_CONST(uint, BIND_LIGHT_VOXEL_DIRECTIONAL, 11);  // array of 6
+DVSGI_CONST(uint, BIND_LIGHT_VOXEL_DIRECTIONAL, 11);  // the six volumes' atlas
 DVSGI_CONST(uint, BIND_LIGHT_OUT_SHADOW, 12);         // mean light visibility
 
 // Shadow cones and area-light visibility march like the gather's cones.

@@ -56,6 +56,14 @@ DVSGI_FUNCTION uint indexSlot(uint value) {
     return slot == VOXEL_INDEX_FULL ? 0u : slot;
 }
 
+// The six directional volumes (order -X +X -Y +Y -Z +Z, the direction light
+// travels) lie side by side along x in one 3D image with mips, the atlas:
+// a cone picks the three it faces by arithmetic, with no per-lane descriptor
+// index (lavapipe has no non-uniform sampler indexing) and without fetching
+// the three facing away. Volume d's cell p, at a level of `size` cells per edge:
+DVSGI_CONST(uint, DIRECTIONAL_VOLUMES, 6);
+DVSGI_FUNCTION ivec3 directionalTexel(uint d, ivec3 p, int size) { return ivec3(p.x + int(d) * size, p.y, p.z); }
+
 struct VoxelGrid {
     vec4 originSize;  // xyz world position of the grid's minimum corner, w voxel edge (m)
     uvec4 dims;       // x N (voxels per edge), y channels, z mip count of the directional volumes, w slot capacity
@@ -89,7 +97,7 @@ DVSGI_CONST(uint, CONE_SET_16, 16);  // sixteen cones over the hemisphere
 // Bindings of lib/cone_trace.glsl, the same in every pass that traces cones.
 DVSGI_CONST(uint, BIND_CONE_GRID, 0);
 DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear
-DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips (array of 6)
+DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips: the six volumes' atlas
 
 DVSGI_END
 

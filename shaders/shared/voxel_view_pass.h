@@ -15,15 +15,16 @@ DVSGI_CONST(uint, VIEW_RADIANCE, 3);
 DVSGI_CONST(uint, VIEW_DIRECTIONAL, 4);
 
 struct VoxelViewPush {
-    uvec4 mode;  // x VIEW_*, y mip level (directional), z output width, w output height
+    uvec4 mode;       // x VIEW_*, y mip level (directional), z output width, w output height
+    uvec4 direction;  // x which directional volume (VIEW_DIRECTIONAL), order -X +X -Y +Y -Z +Z
 };
-DVSGI_CHECK_SIZE(VoxelViewPush, 16);
+DVSGI_CHECK_SIZE(VoxelViewPush, 32);
 
 DVSGI_CONST(uint, BIND_VIEW_GRID, 0);
 DVSGI_CONST(uint, BIND_VIEW_FRAME, 1);
 DVSGI_CONST(uint, BIND_VIEW_ACCUM, 2);
 DVSGI_CONST(uint, BIND_VIEW_RADIANCE, 3);
-DVSGI_CONST(uint, BIND_VIEW_DIRECTIONAL, 4);  // the chosen direction, the chosen mip
+DVSGI_CONST(uint, BIND_VIEW_DIRECTIONAL, 4);  // the directional volumes' atlas at the chosen mip
 DVSGI_CONST(uint, BIND_VIEW_OUT, 5);
 DVSGI_CONST(uint, BIND_VIEW_INDEX, 6);
 

@@ -1,7 +1,6 @@
 #include "render/gather.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "gpu/tracker.h"
@@ -35,7 +34,7 @@ GatherPass::GatherPass(const gpu::Context& ctx) : ctx_(ctx) {
     gpu::LayoutDesc layout;
     layout.bindings = {{sh::BIND_CONE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                        {sh::BIND_GATHER_RADIANCE, sampled, cs},
-                       {sh::BIND_CONE_DIRECTIONAL, sampled, cs, 6},
+                       {sh::BIND_CONE_DIRECTIONAL, sampled, cs},
                        {sh::BIND_GATHER_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                        {sh::BIND_GATHER_BASE, sampled, cs},
                        {sh::BIND_GATHER_NORMAL, sampled, cs},
@@ -74,16 +73,14 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .image(g.normal, gpu::use::ShaderRead)
             .image(g.depth, gpu::use::DepthRead)
             .image(v.radiance, gpu::use::ComputeRead);
-        for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
+        tracker.image(v.directional, gpu::use::ComputeRead);
         tracker.image(outD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
-        std::array<VkImageView, 6> dirs;
-        for (uint32_t d = 0; d < 6; ++d) dirs[d] = v.directional[d].view();
         const VkSampler volumeSampler = in.samplers.volume.handle();
         gpu::bind(cmd, gather_);
         gpu::Descriptors()
             .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
             .sampledImage(sh::BIND_GATHER_RADIANCE, v.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImages(sh::BIND_CONE_DIRECTIONAL, dirs, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
             .uniformBuffer(sh::BIND_GATHER_FRAME, in.frame.handle())
             .sampledImage(sh::BIND_GATHER_BASE, g.base.view(), point)
             .sampledImage(sh::BIND_GATHER_NORMAL, g.normal.view(), point)

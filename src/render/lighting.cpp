@@ -3,7 +3,6 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
-#include <array>
 #include <cmath>
 
 #include "shared/lighting_pass.h"
@@ -38,7 +37,7 @@ LightingPass::LightingPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_LIGHT_OUT_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_LIGHT_VOXEL_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                        {sh::BIND_LIGHT_VOXEL_RADIANCE, sampled, cs},
-                       {sh::BIND_LIGHT_VOXEL_DIRECTIONAL, sampled, cs, 6},
+                       {sh::BIND_LIGHT_VOXEL_DIRECTIONAL, sampled, cs},
                        {sh::BIND_LIGHT_OUT_SHADOW, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::LightingPush);
     layout.pushConstantStages = cs;
@@ -57,10 +56,8 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .image(g.depth, gpu::use::DepthRead)
         .image(in.shadowMap, gpu::use::ShaderRead)
         .image(volumes.radiance, gpu::use::ComputeRead);
-    for (const gpu::Image& d : volumes.directional) tracker.image(d, gpu::use::ComputeRead);
+    tracker.image(volumes.directional, gpu::use::ComputeRead);
     tracker.image(direct, gpu::use::ComputeWrite, true).image(visibility, gpu::use::ComputeWrite, true).flush(cmd);
-    std::array<VkImageView, 6> dirs;
-    for (uint32_t i = 0; i < 6; ++i) dirs[i] = volumes.directional[i].view();
     const VkSampler volumeSampler = in.samplers.volume.handle();
     gpu::bind(cmd, pipeline_);
     const VkSampler point = in.samplers.point.handle();
@@ -76,7 +73,7 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .storageImage(sh::BIND_LIGHT_OUT_DIRECT, direct.view())
         .uniformBuffer(sh::BIND_LIGHT_VOXEL_GRID, volumes.gridBuffer.handle())
         .sampledImage(sh::BIND_LIGHT_VOXEL_RADIANCE, volumes.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImages(sh::BIND_LIGHT_VOXEL_DIRECTIONAL, dirs, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(sh::BIND_LIGHT_VOXEL_DIRECTIONAL, volumes.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(sh::BIND_LIGHT_OUT_SHADOW, visibility.view())
         .push(ctx_, cmd, pipeline_);
     const sh::LightingPush push{vxgi::gpuCone(cone, volumes.grid),

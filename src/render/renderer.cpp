@@ -489,9 +489,7 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
         items.push_back({"voxel direct light", volumes_->direct.memorySize()});
-        uint64_t directional = 0;
-        for (const gpu::Image& d : volumes_->directional) directional += d.memorySize();
-        items.push_back({"directional volumes", directional});
+        items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
     }
     return items;

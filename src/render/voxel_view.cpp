@@ -5,6 +5,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
+#include "shared/voxel_data.h"
 #include "shared/voxel_view_pass.h"
 #include "vxgi/volumes.h"
 
@@ -50,7 +51,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
                            gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel view");
     tracker.image(v.accum, gpu::use::ComputeRead).buffer(v.index, gpu::use::BufferComputeRead).image(v.radiance, gpu::use::ComputeRead);
-    for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
+    tracker.image(v.directional, gpu::use::ComputeRead);
     tracker.image(output, gpu::use::ComputeWrite, true).flush(cmd);
     const uint32_t mip = std::min(view.mip, v.directionalMips - 1);
     const uint32_t w = output.desc().extent.width, h = output.desc().extent.height;
@@ -61,10 +62,11 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
         .storageImage(sh::BIND_VIEW_ACCUM, v.accum.view())
         .storageBuffer(sh::BIND_VIEW_INDEX, v.index.handle())
         .storageImage(sh::BIND_VIEW_RADIANCE, v.radiance.view())
-        .storageImage(sh::BIND_VIEW_DIRECTIONAL, v.directional[std::min(view.direction, 5u)].mipView(mip))
+        .storageImage(sh::BIND_VIEW_DIRECTIONAL, v.directional.mipView(mip))
         .storageImage(sh::BIND_VIEW_OUT, output.view())
         .push(ctx_, cmd, pipeline_);
-    const sh::VoxelViewPush push{glm::uvec4(shaderMode(view.mode), mip, w, h)};
+    const sh::VoxelViewPush push{glm::uvec4(shaderMode(view.mode), mip, w, h),
+                                 glm::uvec4(std::min(view.direction, sh::DIRECTIONAL_VOLUMES - 1), 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     vkCmdDispatch(cmd, gpu::groupCount(w, sh::VIEW_GROUP), gpu::groupCount(h, sh::VIEW_GROUP), 1);
 }

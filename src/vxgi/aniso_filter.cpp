@@ -1,7 +1,6 @@
 #include "vxgi/aniso_filter.h"
 
 #include <algorithm>
-#include <array>
 
 #include "gpu/context.h"
 #include "gpu/timers.h"
@@ -25,8 +24,8 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
     layout.bindings = {{sh::BIND_ANISO_SOURCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_ANISO_SOURCE_DIRS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs, 6},
-                       {sh::BIND_ANISO_TARGET_DIRS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs, 6}};
+                       {sh::BIND_ANISO_SOURCE_DIRS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_ANISO_TARGET_DIRS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::AnisoPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kAniso), layout, "anisotropic filtering");
@@ -37,26 +36,19 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
     gpu::GpuTimerScope timer(timers, cmd, timerName);
     gpu::bind(cmd, pipeline_);
     for (uint32_t level = 0; level < v.directionalMips; ++level) {
-        std::array<VkImageView, 6> source, target;
-        for (uint32_t d = 0; d < 6; ++d) {
-            // Level 0 reads the radiance volume; the source-direction binding
-            // still needs valid views, so it gets level 0 (unused there).
-            source[d] = v.directional[d].mipView(level == 0 ? 0 : level - 1);
-            target[d] = v.directional[d].mipView(level);
-        }
         // Level 0 reads the radiance volume, every other level the one below it.
-        // At level 0 the unused source binding holds the target level itself,
-        // so that level is declared read as well as written.
+        // At level 0 the unused source binding still needs a valid view: it
+        // gets the target level itself, so that level is declared read as
+        // well as written.
+        const VkImageView source = v.directional.mipView(level == 0 ? 0 : level - 1);
         if (level == 0) tracker.image(v.radiance, gpu::use::ComputeRead);
-        for (const gpu::Image& d : v.directional) {
-            if (level > 0) tracker.imageMip(d, level - 1, gpu::use::ComputeRead);
-            tracker.imageMip(d, level, level == 0 ? gpu::use::ComputeReadWrite : gpu::use::ComputeWrite, true);
-        }
+        if (level > 0) tracker.imageMip(v.directional, level - 1, gpu::use::ComputeRead);
+        tracker.imageMip(v.directional, level, level == 0 ? gpu::use::ComputeReadWrite : gpu::use::ComputeWrite, true);
         tracker.flush(cmd);
         gpu::Descriptors()
             .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
-            .storageImages(sh::BIND_ANISO_SOURCE_DIRS, source)
-            .storageImages(sh::BIND_ANISO_TARGET_DIRS, target)
+            .storageImage(sh::BIND_ANISO_SOURCE_DIRS, source)
+            .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(level))
             .push(ctx_, cmd, pipeline_);
         const uint32_t size = std::max((v.grid.n / 2) >> level, 1u);
         const sh::AnisoPush push{glm::uvec4(size, level == 0 ? 1u : 0u, 0u, 0u)};

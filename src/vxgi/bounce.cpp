@@ -1,6 +1,5 @@
 #include "vxgi/bounce.h"
 
-#include <array>
 #include <cstddef>
 
 #include "gpu/context.h"
@@ -27,7 +26,7 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
     layout.bindings = {{sh::BIND_CONE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                       {sh::BIND_CONE_DIRECTIONAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs, 6},
+                       {sh::BIND_CONE_DIRECTIONAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
                        {sh::BIND_BOUNCE_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
@@ -45,7 +44,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
                         const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
-    for (const gpu::Image& d : v.directional) tracker.image(d, gpu::use::ComputeRead);
+    tracker.image(v.directional, gpu::use::ComputeRead);
     // Read and written: the statistics compare each voxel with its value before.
     tracker.image(v.radiance, gpu::use::ComputeReadWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeRead);
@@ -56,12 +55,10 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         tracker.buffer(*stats, gpu::use::BufferComputeWrite);
     }
     tracker.flush(cmd);
-    std::array<VkImageView, 6> dirs;
-    for (uint32_t d = 0; d < 6; ++d) dirs[d] = v.directional[d].view();
     gpu::bind(cmd, pipeline_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
-        .sampledImages(sh::BIND_CONE_DIRECTIONAL, dirs, volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
         .storageImage(sh::BIND_BOUNCE_DIRECT, v.direct.view())
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())

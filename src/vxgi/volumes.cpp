@@ -82,10 +82,12 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
     const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
     if (g.n < 8 || (g.n & (g.n - 1)) != 0)
         throw std::runtime_error("voxels: " + std::to_string(g.n) + " is not a power of two of at least 8");
-    if (g.n > limits.maxImageDimension3D || sh::VOXEL_SLOT_ROW > limits.maxImageDimension3D ||
-        slots / sh::VOXEL_SLOT_ROW > limits.maxImageDimension3D)
+    const uint32_t atlasWidth = sh::DIRECTIONAL_VOLUMES * (g.n / 2);
+    if (g.n > limits.maxImageDimension3D || atlasWidth > limits.maxImageDimension3D ||
+        sh::VOXEL_SLOT_ROW > limits.maxImageDimension3D || slots / sh::VOXEL_SLOT_ROW > limits.maxImageDimension3D)
         throw std::runtime_error("voxels: " + std::to_string(g.n) + "^3 with " + std::to_string(slots) +
-                                 " voxel slots needs 3D images of " + std::to_string(sh::VOXEL_SLOT_ROW) + " x " +
+                                 " voxel slots needs 3D images of " + std::to_string(std::max(g.n, atlasWidth)) +
+                                 " and " + std::to_string(sh::VOXEL_SLOT_ROW) + " x " +
                                  std::to_string(slots / sh::VOXEL_SLOT_ROW) + " texels, but " + ctx.deviceName +
                                  " allows " + std::to_string(limits.maxImageDimension3D) + " per side");
     const uint64_t indexBytes = uint64_t(g.n) * g.n * g.n * sizeof(uint32_t);
@@ -118,10 +120,10 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
     d.name = "voxel radiance";
     radiance = gpu::Image(ctx, d);
     d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
-    d.extent = {g.n / 2, g.n / 2, g.n / 2};
+    d.extent = {sh::DIRECTIONAL_VOLUMES * (g.n / 2), g.n / 2, g.n / 2};
     d.mipLevels = directionalMips;
-    d.name = "directional volume";
-    for (gpu::Image& v : directional) v = gpu::Image(ctx, d);
+    d.name = "directional volumes";
+    directional = gpu::Image(ctx, d);
 
     const sh::VoxelGrid gpuGrid{glm::vec4(g.origin, g.voxelSize), glm::uvec4(g.n, sh::VOXEL_CHANNELS, directionalMips, slots)};
     gridBuffer = gpu::createBuffer(ctx, &gpuGrid, sizeof(gpuGrid), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "voxel grid");
@@ -157,9 +159,7 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
 }
 
 std::vector<const gpu::Image*> VoxelVolumes::all() const {
-    std::vector<const gpu::Image*> images = {&accum, &direct, &radiance};
-    for (const gpu::Image& v : directional) images.push_back(&v);
-    return images;
+    return {&accum, &direct, &radiance, &directional};
 }
 
 }  // namespace dvsgi::vxgi

@@ -57,7 +57,9 @@ public:
     gpu::Image accum;     // R32_SFLOAT, ROW x rows x VOXEL_CHANNELS: summed attributes per slot
     gpu::Image direct;    // RGBA16F, ROW x rows x 1: direct light + emission per slot, kept for the bounces
     gpu::Image radiance;  // RGBA16F, N^3: direct light + emission (+ bounces), a = opacity
-    std::array<gpu::Image, 6> directional;  // RGBA16F, (N/2)^3 + mips; order -X +X -Y +Y -Z +Z
+    // RGBA16F, 6 (N/2) x (N/2) x (N/2) + mips: the six directional volumes side
+    // by side along x (shader::directionalTexel), order -X +X -Y +Y -Z +Z.
+    gpu::Image directional;
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid
     // uint32 per grid voxel (x fastest): slot + 1 | VOXEL_INDEX_STATIC, 0 = empty.
     gpu::Buffer index;

@@ -139,8 +139,9 @@ written = [os.path.exists(os.path.join(TMP, "frame_%02d.exr" % i)) for i in rang
 print("%-34s rc=%d frames %s" % ("frames + moving model", rc, written))
 if rc != 0 or not all(written):
     failures.append("frames: rc=%d written=%s %s" % (rc, written, se))
-for view in ("voxels:albedo", "voxels:radiance"):
-    rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--view", view, "--out", out,
+# The directional view reads one volume of the atlas at a coarser level.
+for view in (["voxels:albedo"], ["voxels:radiance"], ["voxels:directional", "--view-direction=+y", "--view-mip", "1"]):
+    rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--view", *view, "--out", out,
                      "--validate", "--quiet")
     if rc != 0:
         failures.append("%s: rc=%d %s" % (view, rc, se))

@@ -109,7 +109,7 @@ TEST_F(AnisoFilter, EveryDirectionAndLevelMatchesTheRule) {
         double worstGpuChain = 0.0, worstHostChain = 0.0;
         Rgba16Volume previousGpu = radiance, hostChain = radiance;
         for (uint32_t level = 0; level < volumes.directionalMips; ++level) {
-            const Rgba16Volume got = readRgba16(volumes.directional[size_t(dir)], level);
+            const Rgba16Volume got = readDirectional(volumes, uint32_t(dir), level);
             ASSERT_EQ(got.n, (kN / 2) >> level);
             // Level by level from the GPU's own previous level: isolates each dispatch.
             failed += compareLevel(got, filterLevel(previousGpu, dir), dir, level, worstGpuChain);
@@ -149,7 +149,7 @@ TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
     radiance.at(1, 0, 0) = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
     uploadRgba16(volumes.radiance, radiance);
     filter(volumes);
-    auto level0 = [&](int dir) { return readRgba16(volumes.directional[size_t(dir)], 0).at(0, 0, 0); };
+    auto level0 = [&](int dir) { return readDirectional(volumes, uint32_t(dir), 0).at(0, 0, 0); };
     auto expectVec = [](glm::vec4 got, glm::vec4 want, const char* what) {
         for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ(got[c], want[c]) << what << " channel " << c;
     };
@@ -162,7 +162,7 @@ TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
     for (int dir = 2; dir < 6; ++dir)
         expectVec(level0(dir), glm::vec4(0.5f, 1.0f, 0.0f, 1.5f) * 0.25f, "y/z");
     // Level 1 of +X reads level 0 of +X (one filled column of four, in front).
-    const glm::vec4 l1 = readRgba16(volumes.directional[1], 1).at(0, 0, 0);
+    const glm::vec4 l1 = readDirectional(volumes, 1, 1).at(0, 0, 0);
     expectVec(l1, glm::vec4(0.5f, 0.5f, 0.0f, 1.0f) * 0.0625f, "+X level 1");
 }
 

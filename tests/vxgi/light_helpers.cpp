@@ -32,6 +32,25 @@ Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip) {
     return v;
 }
 
+Rgba16Volume readDirectional(const vxgi::VoxelVolumes& volumes, uint32_t dir, uint32_t mip) {
+    const gpu::Image& atlas = volumes.directional;
+    const std::vector<uint8_t> bytes = gpu::readbackImage(context(), atlas, gpu::use::ComputeReadWrite, mip);
+    Rgba16Volume v;
+    v.n = std::max(atlas.desc().extent.height >> mip, 1u);
+    v.texels.resize(size_t(v.n) * v.n * v.n);
+    EXPECT_EQ(bytes.size(), v.texels.size() * 8 * shader::DIRECTIONAL_VOLUMES);
+    for (int z = 0; z < int(v.n); ++z)
+        for (int y = 0; y < int(v.n); ++y)
+            for (int x = 0; x < int(v.n); ++x) {
+                const glm::ivec3 t = shader::directionalTexel(dir, glm::ivec3(x, y, z), int(v.n));
+                const size_t at = (size_t(t.z) * v.n + size_t(t.y)) * v.n * shader::DIRECTIONAL_VOLUMES + size_t(t.x);
+                uint16_t h[4];
+                std::memcpy(h, bytes.data() + at * 8, 8);
+                for (int c = 0; c < 4; ++c) v.at(x, y, z)[c] = glm::unpackHalf1x16(h[c]);
+            }
+    return v;
+}
+
 void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume) {
     std::vector<uint16_t> halves(volume.texels.size() * 4);
     for (size_t i = 0; i < volume.texels.size(); ++i)

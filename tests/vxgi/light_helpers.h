@@ -35,6 +35,8 @@ struct Rgba16Volume {
 
 // Reads one mip of an RGBA16F 3D image kept in GENERAL (all voxel volumes).
 Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip = 0);
+// Reads one mip of directional volume `dir` (order -X +X -Y +Y -Z +Z) out of the atlas.
+Rgba16Volume readDirectional(const vxgi::VoxelVolumes& volumes, uint32_t dir, uint32_t mip = 0);
 // Writes mip 0 of an RGBA16F 3D image (values rounded to fp16), leaving it in GENERAL.
 void uploadRgba16(const gpu::Image& image, const Rgba16Volume& volume);
 
