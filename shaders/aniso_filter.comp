@@ -24,6 +24,18 @@ void main() {
     ivec3 v = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(v, ivec3(pc.sizes.x)))) return;
     ivec3 base = v * 2;
+    int size = int(pc.sizes.x);
+    // Most of a grid is empty. Where the eight children of one direction are
+    // all zero, so are the other five's (each is a composite of the same
+    // voxels) and every result: eight loads decide it instead of the 48 below.
+    // Empty regions are large, so whole SIMD groups take this branch together.
+    bool empty = true;
+    for (int i = 0; i < 8; ++i)
+        empty = empty && all(equal(child(0u, base + ivec3(i & 1, (i >> 1) & 1, i >> 2)), vec4(0.0)));
+    if (empty) {
+        for (uint dir = 0u; dir < DIRECTIONAL_VOLUMES; ++dir) imageStore(targetDirs, directionalTexel(dir, v, size), vec4(0.0));
+        return;
+    }
     for (uint dir = 0u; dir < DIRECTIONAL_VOLUMES; ++dir) {
         int axis = int(dir / 2u);
         // Travelling toward -axis (even dir) the ray enters the +axis child first.
@@ -39,6 +51,6 @@ void main() {
                 vec4 f = child(dir, base + front), k = child(dir, base + back);
                 sum += f + k * (1.0 - f.a);
             }
-        imageStore(targetDirs, directionalTexel(dir, v, int(pc.sizes.x)), sum * 0.25);
+        imageStore(targetDirs, directionalTexel(dir, v, size), sum * 0.25);
     }
 }
