@@ -1,0 +1,209 @@
+#!/usr/bin/env python3
+"""Per-bounce reference radiance of a small glTF scene, traced on the CPU.
+
+    scripts/bounce-reference.py SCENE.gltf OUT_PREFIX [--size 64] [--spp 64] [--bounces 6]
+
+Writes OUT_PREFIX-direct.npy and OUT_PREFIX-bounceK.npy (K = 1..bounces): the
+radiance each bounce adds, per pixel (float32, rows top to bottom, linear RGB),
+and prints their mean luminances. Path-traced references hold the converged
+sum; splitting it per bounce shows which part of a renderer's transport is off
+(the pixel gather's first bounce, the voxel bounce's later ones), because with
+white walls a small error per bounce is multiplied several times over.
+
+Scope, stated so nobody reads more into it: Lambertian materials with a
+constant baseColorFactor (no textures), punctual point and directional lights
+(ideal, inverse square, hard shadows), no emission, meshes under nodes without
+transforms, the scene's first camera node (translation + rotation). Pixel
+centres jittered within the pixel (box filter), cosine-weighted hemisphere
+sampling, back faces reflect like front faces (shared/reference/CONVENTIONS.md).
+Brute force with numpy: fine for tens of triangles, not for Sponza.
+"""
+import argparse
+import json
+import os
+import sys
+
+import numpy as np
+
+LUM = np.array([0.2126, 0.7152, 0.0722])
+
+
+def fail(msg):
+    print("bounce-reference: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def quat_rotate(q, v):
+    x, y, z, w = q
+    u = np.array([x, y, z])
+    return v + 2.0 * np.cross(u, np.cross(u, v) + w * v)
+
+
+def load(path):
+    try:
+        g = json.load(open(path))
+    except (OSError, ValueError) as e:
+        fail("%s: %s" % (path, e))
+    base = os.path.dirname(path)
+    blobs = [open(os.path.join(base, b["uri"]), "rb").read() for b in g["buffers"]]
+
+    def accessor(i):
+        a = g["accessors"][i]
+        view = g["bufferViews"][a["bufferView"]]
+        comps = {"SCALAR": 1, "VEC3": 3}[a["type"]]
+        dtype = {5126: np.float32, 5123: np.uint16, 5125: np.uint32}[a["componentType"]]
+        off = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+        return np.frombuffer(blobs[view["buffer"]], dtype, a["count"] * comps, off).reshape(-1, comps)
+
+    tris, albedo = [], []
+    for node in g["nodes"]:
+        if "mesh" not in node:
+            continue
+        if any(k in node for k in ("matrix", "translation", "rotation", "scale")):
+            fail("%s: node %s has a transform (not supported here)" % (path, node.get("name")))
+        for prim in g["meshes"][node["mesh"]]["primitives"]:
+            pos = accessor(prim["attributes"]["POSITION"]).astype(np.float64)
+            idx = accessor(prim["indices"]).reshape(-1, 3)
+            mat = g["materials"][prim["material"]]
+            if "emissiveFactor" in mat and any(mat["emissiveFactor"]):
+                fail("%s: emissive materials are not supported here" % path)
+            rho = mat.get("pbrMetallicRoughness", {}).get("baseColorFactor", [1, 1, 1, 1])[:3]
+            tris.append(pos[idx])
+            albedo += [rho] * len(idx)
+    tris = np.concatenate(tris)
+    lights = []
+    for node in g["nodes"]:
+        ext = node.get("extensions", {}).get("KHR_lights_punctual")
+        if ext is None:
+            continue
+        l = g["extensions"]["KHR_lights_punctual"]["lights"][ext["light"]]
+        colour = np.array(l.get("color", [1, 1, 1])) * l.get("intensity", 1.0)
+        q = node.get("rotation", [0, 0, 0, 1])
+        if l["type"] == "point":
+            lights.append(("point", np.array(node["translation"], float), colour))
+        elif l["type"] == "directional":
+            lights.append(("sun", quat_rotate(q, np.array([0.0, 0.0, -1.0])), colour))
+        else:
+            fail("%s: light type %s is not supported here" % (path, l["type"]))
+    cam_node = next(n for n in g["nodes"] if "camera" in n)
+    cam = g["cameras"][cam_node["camera"]]["perspective"]
+    q = cam_node.get("rotation", [0, 0, 0, 1])
+    eye = np.array(cam_node.get("translation", [0, 0, 0]), float)
+    axes = [quat_rotate(q, np.array(v, float)) for v in ([1, 0, 0], [0, 1, 0], [0, 0, -1])]
+    return tris, np.array(albedo, float), lights, (eye, axes, cam["yfov"])
+
+
+class Tracer:
+    def __init__(self, tris, albedo):
+        self.v0 = tris[:, 0]
+        self.e1 = tris[:, 1] - tris[:, 0]
+        self.e2 = tris[:, 2] - tris[:, 0]
+        n = np.cross(self.e1, self.e2)
+        self.normal = n / np.linalg.norm(n, axis=1, keepdims=True)
+        self.albedo = albedo
+
+    def hit(self, o, d, tmax=np.inf):
+        """Nearest hit per ray (Moller-Trumbore against every triangle): t and triangle (-1 = none)."""
+        best_t = np.full(len(o), np.inf)
+        best_i = np.full(len(o), -1)
+        for i in range(len(self.v0)):
+            p = np.cross(d, self.e2[i])
+            det = p @ self.e1[i]
+            ok = np.abs(det) > 1e-12
+            inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+            s = o - self.v0[i]
+            u = np.einsum("ij,ij->i", s, p) * inv
+            qv = np.cross(s, self.e1[i])
+            v = np.einsum("ij,ij->i", d, qv) * inv
+            t = qv @ self.e2[i] * inv
+            good = ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 1e-6) & (t < best_t) & (t < tmax)
+            best_t = np.where(good, t, best_t)
+            best_i = np.where(good, i, best_i)
+        return best_t, best_i
+
+
+def direct(tracer, lights, p, n, rho):
+    """Lambertian radiance from the punctual lights at points p (normals n facing the viewer)."""
+    out = np.zeros((len(p), 3))
+    for kind, value, colour in lights:
+        if kind == "point":
+            to = value - p
+            dist = np.linalg.norm(to, axis=1)
+            l = to / dist[:, None]
+            e = colour[None, :] / (dist ** 2)[:, None]
+            tmax = dist - 1e-4
+        else:
+            l = np.broadcast_to(-value / np.linalg.norm(value), p.shape)
+            e = np.broadcast_to(colour, p.shape)
+            tmax = np.inf
+        cos = np.einsum("ij,ij->i", n, l)
+        lit = cos > 0
+        origin = p + n * 1e-5
+        t, _ = tracer.hit(origin[lit], np.ascontiguousarray(l[lit]), tmax if np.isscalar(tmax) else tmax[lit])
+        vis = np.zeros(len(p))
+        vis[lit] = np.isinf(t)
+        out += rho / np.pi * e * (cos * vis)[:, None]
+    return out
+
+
+def cosine_directions(n, rng):
+    u1, u2 = rng.random(len(n)), rng.random(len(n))
+    r, phi = np.sqrt(u1), 2 * np.pi * u2
+    local = np.stack([r * np.cos(phi), r * np.sin(phi), np.sqrt(1 - u1)], axis=1)
+    a = np.where(np.abs(n[:, 0:1]) > 0.9, np.array([[0.0, 1.0, 0.0]]), np.array([[1.0, 0.0, 0.0]]))
+    t = np.cross(a, n)
+    t /= np.linalg.norm(t, axis=1, keepdims=True)
+    b = np.cross(n, t)
+    return local[:, 0:1] * t + local[:, 1:2] * b + local[:, 2:3] * n
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("scene")
+    ap.add_argument("out")
+    ap.add_argument("--size", type=int, default=64)
+    ap.add_argument("--spp", type=int, default=64)
+    ap.add_argument("--bounces", type=int, default=6)
+    ap.add_argument("--seed", type=int, default=1)
+    a = ap.parse_args()
+    tris, albedo, lights, (eye, axes, yfov) = load(a.scene)
+    tracer = Tracer(tris, albedo)
+    rng = np.random.default_rng(a.seed)
+    size = a.size
+    terms = np.zeros((a.bounces + 1, size * size, 3))
+    tan = np.tan(yfov / 2)
+    pix = np.arange(size * size)
+    for _ in range(a.spp):
+        px = (pix % size + rng.random(len(pix))) / size * 2 - 1
+        py = 1 - (pix // size + rng.random(len(pix))) / size * 2
+        d = axes[0][None] * (px * tan)[:, None] + axes[1][None] * (py * tan)[:, None] + axes[2][None]
+        d /= np.linalg.norm(d, axis=1, keepdims=True)
+        o = np.broadcast_to(eye, d.shape).copy()
+        alive = pix.copy()
+        throughput = np.ones((len(pix), 3))
+        for k in range(a.bounces + 1):
+            t, tri = tracer.hit(o, d)
+            h = tri >= 0
+            alive, o, d, t, tri, throughput = alive[h], o[h], d[h], t[h], tri[h], throughput[h]
+            if len(alive) == 0:
+                break
+            p = o + d * t[:, None]
+            n = tracer.normal[tri]
+            n = np.where((np.einsum("ij,ij->i", n, d) > 0)[:, None], -n, n)
+            rho = tracer.albedo[tri]
+            np.add.at(terms[k], alive, throughput * direct(tracer, lights, p, n, rho))
+            # Cosine-weighted sampling: the estimator's weight is the albedo.
+            throughput = throughput * rho
+            o, d = p + n * 1e-5, cosine_directions(n, rng)
+    terms /= a.spp
+    names = ["direct"] + ["bounce%d" % k for k in range(1, a.bounces + 1)]
+    total = 0.0
+    for name, img in zip(names, terms):
+        np.save("%s-%s.npy" % (a.out, name), img.reshape(size, size, 3).astype(np.float32))
+        m = float((img @ LUM).mean())
+        total += m
+        print("%-8s mean luminance %.5f (sum so far %.5f)" % (name, m, total))
+
+
+if __name__ == "__main__":
+    main()
