@@ -3,8 +3,16 @@
 #   dvsgi_add_shaders(TARGET name SOURCES a.comp b.vert ...)
 # creates an INTERFACE library `name` whose include directory holds
 # shaders/<file>.<stage>.inc for every source (e.g. shaders/lighting.comp.inc).
+# Extra definitions for every shader, for diagnostics only (scripts/cone-check.sh
+# builds with DVSGI_SINGLE_CONE=k); empty in every normal build.
+set(DVSGI_SHADER_DEFINES "" CACHE STRING "extra NAME=VALUE definitions for every shader (diagnostics)")
+
 function(dvsgi_add_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  set(defines)
+  foreach(def ${DVSGI_SHADER_DEFINES})
+    list(APPEND defines -D${def})
+  endforeach()
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/include/shaders)
   file(MAKE_DIRECTORY ${out_dir})
   set(outputs)
@@ -15,7 +23,7 @@ function(dvsgi_add_shaders)
     set(dep ${CMAKE_CURRENT_BINARY_DIR}/${name}.d)
     add_custom_command(
       OUTPUT ${out}
-      COMMAND ${GLSLC} --target-env=vulkan1.3 -O -g -I ${CMAKE_CURRENT_SOURCE_DIR}
+      COMMAND ${GLSLC} --target-env=vulkan1.3 -O -g ${defines} -I ${CMAKE_CURRENT_SOURCE_DIR}
               -MD -MF ${dep} -mfmt=num -o ${out} ${abs}
       DEPENDS ${abs}
       DEPFILE ${dep}

@@ -194,5 +194,18 @@ vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams param
         occlusion += wSide * ao;
     }
     occlusion /= PI;
+#ifdef DVSGI_SINGLE_CONE
+    // Diagnostics (scripts/cone-check.sh): the irradiance as if cone k alone
+    // covered the hemisphere, pi times its radiance, to compare cone by cone
+    // with a traced reference.
+    {
+        vec3 dir = n;
+        if (DVSGI_SINGLE_CONE > 0) {
+            float phi = TWO_PI * float(DVSGI_SINGLE_CONE - 1) / 5.0;
+            dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
+        }
+        E = PI * traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, false, ao).rgb;
+    }
+#endif
     return E;
 }
