@@ -34,21 +34,59 @@ vec4 fetchVolume(uint face, vec3 uvw, float size, float lod) {
     return inside * textureLod(directional, uvw, lod);
 }
 
-void tapDirectional(uint face, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
-    // Cells per edge at this level, from the grid rather than textureSize:
-    // lavapipe answers a size query with one lane's level for all lanes.
-    float size = max(float(grid.dims.x / 2u) * exp2(-lod), 1.0);
+// The two cells around uvw along `axis` (of a volume with `size` cells per
+// edge): their centres p0, p1, and the returned weight of p1's optical depth.
+float cellsAlongAxis(vec3 uvw, int axis, float size, out vec3 p0, out vec3 p1) {
     float x = uvw[axis] * size - 0.5;
-    float c = floor(x), f = clamp((x - c - 0.5) / DEPTH_RAMP + 0.5, 0.0, 1.0);
-    vec3 p0 = uvw, p1 = uvw;
+    float c = floor(x);
+    p0 = uvw;
+    p1 = uvw;
     p0[axis] = (c + 0.5) / size;
     p1[axis] = (c + 1.5) / size;
-    vec4 a = fetchVolume(face, p0, size, lod), b = fetchVolume(face, p1, size, lod);
+    return clamp((x - c - 0.5) / DEPTH_RAMP + 0.5, 0.0, 1.0);
+}
+
+// Adds w times the optical depth tau = -ln(1 - alpha) and emission tau L
+// interpolated between two premultiplied cell values (weight f on b).
+void addOpticalDepth(vec4 a, vec4 b, float f, float w, inout vec4 acc) {
     float ta = -log(1.0 - min(a.a, 0.9999)), tb = -log(1.0 - min(b.a, 0.9999));
     vec3 ja = a.a > 1e-6 ? a.rgb * (ta / a.a) : vec3(0.0);
     vec3 jb = b.a > 1e-6 ? b.rgb * (tb / b.a) : vec3(0.0);
     acc += w * vec4(mix(ja, jb, f), mix(ta, tb, f));
 }
+
+// Summed (tau L, tau) back to premultiplied (alpha L, alpha).
+vec4 premultiplied(vec4 acc) {
+    if (acc.a <= 1e-6) return vec4(0.0);
+    float a = 1.0 - exp(-acc.a);
+    return vec4(acc.rgb * (a / acc.a), a);
+}
+
+void tapDirectional(uint face, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
+    // Cells per edge at this level, from the grid rather than textureSize:
+    // lavapipe answers a size query with one lane's level for all lanes.
+    float size = max(float(grid.dims.x / 2u) * exp2(-lod), 1.0);
+    vec3 p0, p1;
+    float f = cellsAlongAxis(uvw, axis, size, p0, p1);
+    addOpticalDepth(fetchVolume(face, p0, size, lod), fetchVolume(face, p1, size, lod), f, w, acc);
+}
+
+#ifdef CONE_USE_RADIANCE_VOLUME
+// The radiance volume (one-voxel cells, the same opacity every way) sampled
+// as the directional volumes are, along the axis the cone travels most:
+// trilinear opacity across a one-voxel surface is a tent whose step-corrected
+// transmittance is about 0.1, so narrow shadow cones saw through single-layer
+// occluders (umbra 0.10 instead of 0).
+vec4 sampleRadianceVolume(vec3 uvw, vec3 dir) {
+    vec3 a = abs(dir);
+    int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    vec3 p0, p1;
+    float f = cellsAlongAxis(uvw, axis, float(grid.dims.x), p0, p1);
+    vec4 acc = vec4(0.0);
+    addOpticalDepth(textureLod(radianceVolume, p0, 0.0), textureLod(radianceVolume, p1, 0.0), f, 1.0, acc);
+    return premultiplied(acc);
+}
+#endif
 
 // The three volumes facing `dir` at one whole level: their weighted optical
 // depths add, T = prod T_i^(w_i), and the radiance is the depth-weighted mean.
@@ -62,9 +100,7 @@ vec4 sampleFacing(vec3 uvw, vec3 dir, vec3 w, float lod) {
     tapDirectional(face.x, 0, uvw, lod, w.x, acc);
     tapDirectional(face.y, 1, uvw, lod, w.y, acc);
     tapDirectional(face.z, 2, uvw, lod, w.z, acc);
-    if (acc.a <= 1e-6) return vec4(0.0);
-    float a = 1.0 - exp(-acc.a);
-    return vec4(acc.rgb * (a / acc.a), a);
+    return premultiplied(acc);
 }
 
 // Directional sample for a cone marching along unit `dir` at mip `level`: the
@@ -135,7 +171,7 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         // Directional level 0 voxels are two voxels wide.
         vec4 smp = sampleDirectional(uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels);
 #ifdef CONE_USE_RADIANCE_VOLUME
-        if (level < 1.0) smp = mix(textureLod(radianceVolume, uvw, 0.0), smp, level);
+        if (level < 1.0) smp = mix(sampleRadianceVolume(uvw, dir), smp, level);
 #endif
         // Steps follow the cone's diameter but never exceed the sampled cell,
         // so a clamped (finer) footprint does not step over a thin wall.

