@@ -15,21 +15,19 @@ import sys
 import tempfile
 
 import numpy as np
-import OpenImageIO as oiio
 
 dvsgi, shared, tracer = sys.argv[1:4]
+cornell = os.path.join(shared, "scenes/cornell-box/cornell-lights.gltf")
+for needed in (cornell, os.path.join(shared, "tools/compare.py")):
+    if not os.path.exists(needed):
+        print("FAIL: %s not found" % needed)  # a check that did not run must not pass
+        sys.exit(1)
+sys.path.insert(0, os.path.join(shared, "tools"))
+import compare  # noqa: E402  (the project's metrics and EXR reader, ../shared/tools)
 LUM = np.array([0.2126, 0.7152, 0.0722])
 SIZE, VOXELS, SPP = 64, 64, 128
 tmp = tempfile.mkdtemp(prefix="dvsgi-bounce-")
 failures = []
-
-
-def read(path):
-    i = oiio.ImageInput.open(path)
-    s = i.spec()
-    a = np.asarray(i.read_image(0, 0, 0, 3, "float")).reshape(s.height, s.width, 3)
-    i.close()
-    return a
 
 
 def render(scene, name, *options, voxels=VOXELS):
@@ -37,7 +35,7 @@ def render(scene, name, *options, voxels=VOXELS):
     subprocess.run([dvsgi, "render", scene, "--width", str(SIZE), "--height", str(SIZE), "--voxels", str(voxels),
                     "--trace-scale", "1", "--out", out, "--png", "none", "--validate", "--quiet", *options],
                    check=True, timeout=300)
-    return float((read(out) @ LUM).mean())
+    return float((compare.read_rgb(out) @ LUM).mean())
 
 
 def check(label, got, want, bound):
@@ -47,10 +45,6 @@ def check(label, got, want, bound):
         failures.append("%s: ratio %.3f off by more than %.3f" % (label, ratio, bound))
 
 
-cornell = os.path.join(shared, "scenes/cornell-box/cornell-lights.gltf")
-if not os.path.exists(cornell):
-    print("FAIL: %s not found" % cornell)  # a check that did not run must not pass
-    sys.exit(1)
 corner = os.path.join(tmp, "corner.gltf")
 subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(tracer), "corner-scene.py"), corner], check=True)
 
