@@ -146,15 +146,37 @@ def direct(tracer, lights, p, n, rho):
     return out
 
 
+def orthonormal_basis(v):
+    """Unit vectors u, w with (u, w, v) orthonormal, per row of unit vectors v."""
+    a = np.where(np.abs(v[:, 0:1]) > 0.9, np.array([[0.0, 1.0, 0.0]]), np.array([[1.0, 0.0, 0.0]]))
+    u = np.cross(a, v)
+    u /= np.linalg.norm(u, axis=1, keepdims=True)
+    return u, np.cross(v, u)
+
+
 def cosine_directions(n, rng):
     u1, u2 = rng.random(len(n)), rng.random(len(n))
     r, phi = np.sqrt(u1), 2 * np.pi * u2
-    local = np.stack([r * np.cos(phi), r * np.sin(phi), np.sqrt(1 - u1)], axis=1)
-    a = np.where(np.abs(n[:, 0:1]) > 0.9, np.array([[0.0, 1.0, 0.0]]), np.array([[1.0, 0.0, 0.0]]))
-    t = np.cross(a, n)
-    t /= np.linalg.norm(t, axis=1, keepdims=True)
-    b = np.cross(n, t)
-    return local[:, 0:1] * t + local[:, 1:2] * b + local[:, 2:3] * n
+    t, b = orthonormal_basis(n)
+    return (r * np.cos(phi))[:, None] * t + (r * np.sin(phi))[:, None] * b + np.sqrt(1 - u1)[:, None] * n
+
+
+def camera_rays(camera, size, offset):
+    """Unit directions through every pixel of a size x size image (rows top to bottom), at `offset` (0..1, per
+    pixel) inside each pixel; the origin is the camera's position."""
+    eye, axes, yfov = camera
+    pix = np.arange(size * size)
+    tan = np.tan(yfov / 2)
+    px = (pix % size + offset[0]) / size * 2 - 1
+    py = 1 - (pix // size + offset[1]) / size * 2
+    d = axes[0][None] * (px * tan)[:, None] + axes[1][None] * (py * tan)[:, None] + axes[2][None]
+    return np.broadcast_to(eye, d.shape).copy(), d / np.linalg.norm(d, axis=1, keepdims=True)
+
+
+def surface(tracer, o, d, t, tri):
+    """Hit points, normals facing the ray's origin (back faces reflect like front faces) and albedos."""
+    n = tracer.normal[tri]
+    return o + d * t[:, None], np.where((np.einsum("ij,ij->i", n, d) > 0)[:, None], -n, n), tracer.albedo[tri]
 
 
 def main():
@@ -166,19 +188,15 @@ def main():
     ap.add_argument("--bounces", type=int, default=6)
     ap.add_argument("--seed", type=int, default=1)
     a = ap.parse_args()
-    tris, albedo, lights, (eye, axes, yfov) = load(a.scene)
+    tris, albedo, lights, camera = load(a.scene)
     tracer = Tracer(tris, albedo)
     rng = np.random.default_rng(a.seed)
     size = a.size
     terms = np.zeros((a.bounces + 1, size * size, 3))
-    tan = np.tan(yfov / 2)
     pix = np.arange(size * size)
     for _ in range(a.spp):
-        px = (pix % size + rng.random(len(pix))) / size * 2 - 1
-        py = 1 - (pix // size + rng.random(len(pix))) / size * 2
-        d = axes[0][None] * (px * tan)[:, None] + axes[1][None] * (py * tan)[:, None] + axes[2][None]
-        d /= np.linalg.norm(d, axis=1, keepdims=True)
-        o = np.broadcast_to(eye, d.shape).copy()
+        jitter = (rng.random(len(pix)), rng.random(len(pix)))
+        o, d = camera_rays(camera, size, jitter)
         alive = pix.copy()
         throughput = np.ones((len(pix), 3))
         for k in range(a.bounces + 1):
@@ -187,10 +205,7 @@ def main():
             alive, o, d, t, tri, throughput = alive[h], o[h], d[h], t[h], tri[h], throughput[h]
             if len(alive) == 0:
                 break
-            p = o + d * t[:, None]
-            n = tracer.normal[tri]
-            n = np.where((np.einsum("ij,ij->i", n, d) > 0)[:, None], -n, n)
-            rho = tracer.albedo[tri]
+            p, n, rho = surface(tracer, o, d, t, tri)
             np.add.at(terms[k], alive, throughput * direct(tracer, lights, p, n, rho))
             # Cosine-weighted sampling: the estimator's weight is the albedo.
             throughput = throughput * rho

@@ -23,14 +23,6 @@ br = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(br)
 
 
-def basis(v):
-    """Unit vectors u, w with (u, w, v) orthonormal, per row."""
-    a = np.where((np.abs(v[:, 0]) > 0.9)[:, None], np.array([[0.0, 1.0, 0.0]]), np.array([[1.0, 0.0, 0.0]]))
-    u = np.cross(a, v)
-    u /= np.linalg.norm(u, axis=1, keepdims=True)
-    return u, np.cross(v, u)
-
-
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("scene")
@@ -39,22 +31,14 @@ def main():
     ap.add_argument("--spp", type=int, default=32)
     ap.add_argument("--seed", type=int, default=7)
     a = ap.parse_args()
-    tris, albedo, lights, (eye, axes, yfov) = br.load(a.scene)
+    tris, albedo, lights, camera = br.load(a.scene)
     tracer = br.Tracer(tris, albedo)
     rng = np.random.default_rng(a.seed)
-    size, pix = a.size, np.arange(a.size * a.size)
-    tan = np.tan(yfov / 2)
-    px = (pix % size + 0.5) / size * 2 - 1
-    py = 1 - (pix // size + 0.5) / size * 2
-    d = axes[0][None] * (px * tan)[:, None] + axes[1][None] * (py * tan)[:, None] + axes[2][None]
-    d /= np.linalg.norm(d, axis=1, keepdims=True)
-    o = np.broadcast_to(eye, d.shape).copy()
+    size = a.size
+    o, d = br.camera_rays(camera, size, (0.5, 0.5))
     t, tri = tracer.hit(o, d)
     h = tri >= 0
-    p = o[h] + d[h] * t[h][:, None]
-    n = tracer.normal[tri[h]]
-    n = np.where((np.einsum("ij,ij->i", n, d[h]) > 0)[:, None], -n, n)
-    rho = tracer.albedo[tri[h]]
+    p, n, rho = br.surface(tracer, o[h], d[h], t[h], tri[h])
     # coneBasis() of cone_trace.glsl.
     up = np.where((np.abs(n[:, 1]) < 0.99)[:, None], np.array([[0.0, 1.0, 0.0]]), np.array([[1.0, 0.0, 0.0]]))
     tt = np.cross(up, n)
@@ -67,7 +51,7 @@ def main():
             phi = 2 * np.pi * (i - 1) / 5
             axis = 0.5 * n + 0.8660254 * (np.cos(phi) * tt + np.sin(phi) * bb)
             axis /= np.linalg.norm(axis, axis=1, keepdims=True)
-        u, w = basis(axis)
+        u, w = br.orthonormal_basis(axis)
         for _ in range(a.spp):
             # Uniform over the 30-degree cap around the axis.
             c = 1 - rng.random(len(n)) * (1 - np.cos(np.pi / 6))
@@ -77,10 +61,8 @@ def main():
             hit = (tri2 >= 0) & (np.einsum("ij,ij->i", dirs, n) > 0)
             radiance = np.zeros((len(n), 3))
             if hit.any():
-                q = p[hit] + dirs[hit] * t2[hit][:, None]
-                nq = tracer.normal[tri2[hit]]
-                nq = np.where((np.einsum("ij,ij->i", nq, dirs[hit]) > 0)[:, None], -nq, nq)
-                radiance[hit] = br.direct(tracer, lights, q, nq, tracer.albedo[tri2[hit]])
+                q, nq, rq = br.surface(tracer, p[hit], dirs[hit], t2[hit], tri2[hit])
+                radiance[hit] = br.direct(tracer, lights, q, nq, rq)
             cones[i][h] += rho * radiance / a.spp
     np.save(a.out, cones.reshape(6, size, size, 3).astype(np.float32))
     weights = np.array([1 / 3.5] + [0.5 / 3.5] * 5)

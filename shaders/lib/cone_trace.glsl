@@ -208,6 +208,14 @@ void coneBasis(vec3 n, out vec3 t, out vec3 b) {
     b = cross(n, t);
 }
 
+// Direction of cone k of the paper's six (0 along n, 1-5 at 60 degrees from
+// it, phi = 72 (k - 1) degrees around n from t toward b).
+vec3 sixConeDirection(vec3 n, vec3 t, vec3 b, int k) {
+    if (k == 0) return n;
+    float phi = TWO_PI * float(k - 1) / 5.0;
+    return normalize(0.5 * n + 0.8660254 * (cos(phi) * t + sin(phi) * b));
+}
+
 // The paper's six 60-degree cones: one along n, five at 60 degrees from it.
 // `occlusion` is the cones' opacity weighted by f(r) = 1 / (1 + aoLambda r);
 // with aoLambda = 0 it is their plain opacity (the voxel bounce).
@@ -215,33 +223,26 @@ vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams param
                        out float occlusion) {
     vec3 t, b;
     coneBasis(n, t, b);
-    const float sin60 = 0.8660254, cos60 = 0.5;
-    // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
-    const float wCenter = PI / 3.5, wSide = PI * 0.5 / 3.5;
     float ao;
-    vec4 c = traceConeAO(origin, n, originHeight, n, TAN_30, params, aoLambda, false, ao);
-    vec3 E = wCenter * c.rgb;
-    occlusion = wCenter * ao;
-    for (int i = 0; i < 5; ++i) {
-        float phi = TWO_PI * float(i) / 5.0;
-        vec3 dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
-        vec4 s = traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, false, ao);
-        E += wSide * s.rgb;
-        occlusion += wSide * ao;
-    }
-    occlusion /= PI;
 #ifdef DVSGI_SINGLE_CONE
     // Diagnostics (scripts/cone-check.sh): the irradiance as if cone k alone
     // covered the hemisphere, pi times its radiance, to compare cone by cone
     // with a traced reference.
-    {
-        vec3 dir = n;
-        if (DVSGI_SINGLE_CONE > 0) {
-            float phi = TWO_PI * float(DVSGI_SINGLE_CONE - 1) / 5.0;
-            dir = normalize(cos60 * n + sin60 * (cos(phi) * t + sin(phi) * b));
-        }
-        E = PI * traceConeAO(origin, n, originHeight, dir, TAN_30, params, aoLambda, false, ao).rgb;
-    }
+    vec4 single = traceConeAO(origin, n, originHeight, sixConeDirection(n, t, b, DVSGI_SINGLE_CONE), TAN_30, params,
+                              aoLambda, false, ao);
+    occlusion = ao;
+    return PI * single.rgb;
 #endif
+    // Weights pi * cos(theta_i) / sum cos(theta_j): 1 + 5 * 0.5 = 3.5.
+    const float wCenter = PI / 3.5, wSide = PI * 0.5 / 3.5;
+    vec3 E = vec3(0.0);
+    occlusion = 0.0;
+    for (int k = 0; k < 6; ++k) {
+        vec4 c = traceConeAO(origin, n, originHeight, sixConeDirection(n, t, b, k), TAN_30, params, aoLambda, false, ao);
+        float w = k == 0 ? wCenter : wSide;
+        E += w * c.rgb;
+        occlusion += w * ao;
+    }
+    occlusion /= PI;
     return E;
 }

@@ -18,17 +18,24 @@ float toHalf(float v) { return glm::unpackHalf1x16(glm::packHalf1x16(v)); }
 
 glm::vec4 toHalf(glm::vec4 v) { return {toHalf(v.x), toHalf(v.y), toHalf(v.z), toHalf(v.w)}; }
 
+namespace {
+
+// One RGBA16F texel of a readback.
+glm::vec4 halfTexel(const uint8_t* bytes) {
+    uint16_t h[4];
+    std::memcpy(h, bytes, 8);
+    return {glm::unpackHalf1x16(h[0]), glm::unpackHalf1x16(h[1]), glm::unpackHalf1x16(h[2]), glm::unpackHalf1x16(h[3])};
+}
+
+}  // namespace
+
 Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip) {
     const std::vector<uint8_t> bytes = gpu::readbackImage(context(), image, gpu::use::ComputeReadWrite, mip);
     Rgba16Volume v;
     v.n = std::max(image.desc().extent.width >> mip, 1u);
     v.texels.resize(size_t(v.n) * v.n * v.n);
     EXPECT_EQ(bytes.size(), v.texels.size() * 8);
-    for (size_t i = 0; i < v.texels.size(); ++i) {
-        uint16_t h[4];
-        std::memcpy(h, bytes.data() + i * 8, 8);
-        for (int c = 0; c < 4; ++c) v.texels[i][c] = glm::unpackHalf1x16(h[c]);
-    }
+    for (size_t i = 0; i < v.texels.size(); ++i) v.texels[i] = halfTexel(bytes.data() + i * 8);
     return v;
 }
 
@@ -44,9 +51,7 @@ Rgba16Volume readDirectional(const vxgi::VoxelVolumes& volumes, uint32_t dir, ui
             for (int x = 0; x < int(v.n); ++x) {
                 const glm::ivec3 t = shader::directionalTexel(dir, glm::ivec3(x, y, z), int(v.n));
                 const size_t at = (size_t(t.z) * v.n + size_t(t.y)) * v.n * shader::DIRECTIONAL_VOLUMES + size_t(t.x);
-                uint16_t h[4];
-                std::memcpy(h, bytes.data() + at * 8, 8);
-                for (int c = 0; c < 4; ++c) v.at(x, y, z)[c] = glm::unpackHalf1x16(h[c]);
+                v.at(x, y, z) = halfTexel(bytes.data() + at * 8);
             }
     return v;
 }
