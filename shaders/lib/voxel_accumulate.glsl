@@ -6,35 +6,44 @@
 
 // The voxel's index value, claiming a slot when the voxel is empty: the
 // invocation whose compare-and-swap finds 0 locks the voxel, takes the next
-// list entry as its slot and publishes it at once; the others read the
-// published value (and wait only while the owner is between the two steps).
+// list entry as its slot and publishes it; the others retry until the value
+// is published. The owner's work sits inside the same loop iteration as the
+// others' retry, so lanes of one subgroup reconverge at the loop's end and the
+// owner always runs before they look again: a waiting loop placed after the
+// owner's branch let NVIDIA's compiler run the waiting lanes first, spinning
+// against an owner that could not run until they gave up.
 uint claimVoxel(ivec3 voxel, uint mode) {
     uint at = voxelIndexOffset(voxel);
     uint value = voxelIndex[at];
     if (value != 0u && value != VOXEL_INDEX_LOCKED) return value;
-    value = atomicCompSwap(voxelIndex[at], 0u, VOXEL_INDEX_LOCKED);
-    if (value == 0u) {
-        uint slot = atomicAdd(list.header.counts.x, 1u);
-        if (slot < list.header.counts.z) {
-            list.entries[slot] = packVoxel(voxel);
-            value = slot + 1u;
-        } else {
-            atomicAdd(list.header.counts.w, 1u);
-            value = VOXEL_INDEX_FULL;
-        }
-        if (mode != VOXELIZE_DYNAMIC) value |= VOXEL_INDEX_STATIC;
-        atomicExchange(voxelIndex[at], value);
-        return value;
-    }
     // Bounded: a fragment shader's helper invocations get undefined atomic
     // results (and have no side effects). A real invocation never gets near
     // the bound; if one did, it is counted as dropped, like a full list.
-    for (uint spins = 0u; value == VOXEL_INDEX_LOCKED; ++spins) {
-        if (spins == VOXEL_CLAIM_SPINS) {
-            atomicAdd(list.header.counts.w, 1u);
-            return VOXEL_INDEX_FULL;
+    // One exit after the loop (a break, no return inside it): llvmpipe ran
+    // the code after a loop for lanes that had returned from inside it.
+    bool published = false;
+    for (uint spins = 0u; spins < VOXEL_CLAIM_SPINS; ++spins) {
+        value = atomicCompSwap(voxelIndex[at], 0u, VOXEL_INDEX_LOCKED);
+        if (value == 0u) {
+            uint slot = atomicAdd(list.header.counts.x, 1u);
+            if (slot < list.header.counts.z) {
+                list.entries[slot] = packVoxel(voxel);
+                value = slot + 1u;
+            } else {
+                atomicAdd(list.header.counts.w, 1u);
+                value = VOXEL_INDEX_FULL;
+            }
+            if (mode != VOXELIZE_DYNAMIC) value |= VOXEL_INDEX_STATIC;
+            atomicExchange(voxelIndex[at], value);
         }
-        value = atomicOr(voxelIndex[at], 0u);
+        if (value != VOXEL_INDEX_LOCKED) {
+            published = true;
+            break;
+        }
+    }
+    if (!published) {
+        atomicAdd(list.header.counts.w, 1u);
+        value = VOXEL_INDEX_FULL;
     }
     return value;
 }

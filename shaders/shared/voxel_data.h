@@ -44,8 +44,9 @@ DVSGI_CONST(uint, VOXEL_INDEX_SLOT_MASK, 0x7FFFFFFFu);
 DVSGI_CONST(uint, VOXEL_INDEX_LOCKED, 0xFFFFFFFFu);
 // Claimed when every slot was taken: no slot, the fragment is dropped and
 // counted (VoxelListHeader.counts.w), and the host grows the storage and
-// voxelizes again.
-DVSGI_CONST(uint, VOXEL_INDEX_FULL, 0x7FFFFFFFu);
+// voxelizes again. Not all ones, so that with the static bit it still differs
+// from VOXEL_INDEX_LOCKED.
+DVSGI_CONST(uint, VOXEL_INDEX_FULL, 0x7FFFFFFEu);
 // Reads of a locked index before a waiting invocation gives up (claimVoxel).
 DVSGI_CONST(uint, VOXEL_CLAIM_SPINS, 1u << 20);
 
@@ -53,7 +54,7 @@ DVSGI_CONST(uint, VOXEL_CLAIM_SPINS, 1u << 20);
 // overflow values, which own no slot).
 DVSGI_FUNCTION uint indexSlot(uint value) {
     uint slot = value & VOXEL_INDEX_SLOT_MASK;
-    return slot == VOXEL_INDEX_FULL ? 0u : slot;
+    return slot >= VOXEL_INDEX_FULL ? 0u : slot;
 }
 
 // The six directional volumes (order -X +X -Y +Y -Z +Z, the direction light

@@ -96,13 +96,18 @@ VkImageViewType viewType(const ImageDesc& d, uint32_t layers) {
 
 LiveMemory liveDeviceMemory() { return {g_liveBytes.load(), g_liveAllocations.load()}; }
 
+uint64_t nextResourceSerial() {
+    static std::atomic<uint64_t> next{1};
+    return next.fetch_add(1);
+}
+
 bool isDepthFormat(VkFormat f) {
     return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_D24_UNORM_S8_UINT ||
            f == VK_FORMAT_D32_SFLOAT_S8_UINT;
 }
 
 Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use, const char* name)
-    : device_(ctx.device), size_(size) {
+    : device_(ctx.device), size_(size), serial_(nextResourceSerial()) {
     VkBufferCreateInfo bci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     bci.size = size ? size : 16;  // zero-sized buffers are invalid; keep empty scenes legal
     bci.usage = usage;
@@ -146,6 +151,7 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
         size_ = std::exchange(o.size_, 0);
         allocated_ = std::exchange(o.allocated_, 0);
         mapped_ = std::exchange(o.mapped_, nullptr);
+        serial_ = std::exchange(o.serial_, 0);
     }
     return *this;
 }
@@ -161,7 +167,8 @@ void Buffer::reset() {
     allocated_ = 0;
 }
 
-Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device), desc_(desc) {
+Image::Image(const Context& ctx, const ImageDesc& desc)
+    : device_(ctx.device), desc_(desc), serial_(nextResourceSerial()) {
     VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ici.imageType = desc.type;
     ici.format = desc.format;
@@ -245,6 +252,7 @@ Image& Image::operator=(Image&& o) noexcept {
         mipViews_ = std::move(o.mipViews_);
         layerViews_ = std::move(o.layerViews_);
         desc_ = o.desc_;
+        serial_ = std::exchange(o.serial_, 0);
     }
     return *this;
 }

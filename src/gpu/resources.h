@@ -25,6 +25,12 @@ struct LiveMemory {
 };
 LiveMemory liveDeviceMemory();
 
+// A number no other Buffer or Image of this process ever had: drivers reuse
+// Vulkan handle values once an object is destroyed (NVIDIA's often do at
+// once), so state kept per resource, such as the tracker's layouts, must not
+// be keyed by the handle.
+uint64_t nextResourceSerial();
+
 class Buffer {
 public:
     Buffer() = default;
@@ -36,6 +42,7 @@ public:
     Buffer& operator=(const Buffer&) = delete;
 
     VkBuffer handle() const { return buffer_; }
+    uint64_t serial() const { return serial_; }
     VkDeviceSize size() const { return size_; }
     void* mapped() const { return mapped_; }  // non-null for Upload/Readback
     explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
@@ -48,6 +55,7 @@ private:
     VkDeviceSize size_ = 0;
     VkDeviceSize allocated_ = 0;  // the allocation's size (>= size_), for liveDeviceMemory()
     void* mapped_ = nullptr;
+    uint64_t serial_ = 0;
 };
 
 struct ImageDesc {
@@ -71,6 +79,7 @@ public:
     Image& operator=(const Image&) = delete;
 
     VkImage handle() const { return image_; }
+    uint64_t serial() const { return serial_; }
     VkImageView view() const { return view_; }  // all mips and layers
     VkImageView mipView(uint32_t mip) const { return mipViews_.at(mip); }       // one mip, all layers
     VkImageView layerView(uint32_t layer) const { return layerViews_.at(layer); } // one layer, mip 0 (2D)
@@ -89,6 +98,7 @@ private:
     std::vector<VkImageView> mipViews_;
     std::vector<VkImageView> layerViews_;
     ImageDesc desc_;
+    uint64_t serial_ = 0;
 };
 
 struct SamplerDesc {

@@ -54,7 +54,7 @@ Tracker::Barrier Tracker::advance(History& h, ImageUse use, bool discard) {
 }
 
 std::vector<Tracker::History>& Tracker::mips(const Image& image) {
-    std::vector<History>& m = imageHistory_[image.handle()];
+    std::vector<History>& m = imageHistory_[image.serial()];
     if (m.empty()) m.resize(image.desc().mipLevels);
     return m;
 }
@@ -90,7 +90,7 @@ Tracker& Tracker::imageMip(const Image& image, uint32_t mip, ImageUse use, bool 
 }
 
 Tracker& Tracker::buffer(const Buffer& buffer, VkPipelineStageFlags2 stages, VkAccessFlags2 access) {
-    const Barrier b = advance(bufferHistory_[buffer.handle()], {VK_IMAGE_LAYOUT_UNDEFINED, stages, access}, false);
+    const Barrier b = advance(bufferHistory_[buffer.serial()], {VK_IMAGE_LAYOUT_UNDEFINED, stages, access}, false);
     if (!b.needed) return *this;
     VkBufferMemoryBarrier2 bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
     bb.srcStageMask = b.from.stages;
@@ -123,7 +123,7 @@ void Tracker::assume(const Image& image, ImageUse use) {
 }
 
 VkImageLayout Tracker::layout(const Image& image, uint32_t mip) const {
-    const auto it = imageHistory_.find(image.handle());
+    const auto it = imageHistory_.find(image.serial());
     return it == imageHistory_.end() ? VK_IMAGE_LAYOUT_UNDEFINED : it->second.at(mip).layout;
 }
 

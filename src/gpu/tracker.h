@@ -64,8 +64,8 @@ private:
     std::vector<History>& mips(const Image& image);
     void addImageBarrier(const Image& image, uint32_t mip, uint32_t count, const Barrier& b);
 
-    std::unordered_map<VkImage, std::vector<History>> imageHistory_;  // one entry per mip
-    std::unordered_map<VkBuffer, History> bufferHistory_;
+    std::unordered_map<uint64_t, std::vector<History>> imageHistory_;  // by Image::serial(), one entry per mip
+    std::unordered_map<uint64_t, History> bufferHistory_;  // by Buffer::serial()
     std::vector<VkImageMemoryBarrier2> images_;
     std::vector<VkBufferMemoryBarrier2> buffers_;
 };

@@ -101,6 +101,35 @@ TEST_F(Tracker, MipChainsBarrierOnlyTheLevelsInvolvedAndMergeNeighbours) {
     EXPECT_EQ(b[0].subresourceRange.levelCount, 3u);
 }
 
+// Drivers reuse handle values of destroyed objects (NVIDIA's did at once when
+// the voxel storage grew, and the tracker applied a one-mip image's history to
+// the new mip chain). A resource created later is new to the tracker whatever
+// its handle: its first use is a transition from UNDEFINED over all its mips.
+TEST_F(Tracker, AResourceCreatedLaterIsNewEvenWithAReusedHandle) {
+    gpu::Tracker t;
+    VkImage firstHandle = VK_NULL_HANDLE;
+    {
+        const gpu::Image first = storageImage(1);
+        firstHandle = first.handle();
+        t.image(first, gpu::use::ComputeWrite, true);
+        take(t);
+        t.image(first, gpu::use::ShaderRead);
+        take(t);
+    }
+    const gpu::Image second = storageImage(4);
+    std::printf("  handle %s\n", second.handle() == firstHandle ? "reused (the case this test is for)" : "not reused");
+    EXPECT_EQ(t.layout(second), VK_IMAGE_LAYOUT_UNDEFINED);
+    t.imageMip(second, 3, gpu::use::ComputeWrite, true);
+    auto b = take(t);
+    ASSERT_EQ(b.size(), 1u);
+    EXPECT_EQ(b[0].subresourceRange.baseMipLevel, 3u);
+    t.imageMip(second, 1, gpu::use::ComputeRead);
+    b = take(t);
+    ASSERT_EQ(b.size(), 1u);
+    EXPECT_EQ(b[0].oldLayout, VK_IMAGE_LAYOUT_UNDEFINED) << "mip 1 was never used";
+    EXPECT_EQ(b[0].subresourceRange.baseMipLevel, 1u);
+}
+
 TEST_F(Tracker, BuffersGetWriteToHostReadBarriers) {
     const gpu::Buffer buf(context(), 64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Readback, "stats");
     gpu::Tracker t;
