@@ -182,18 +182,22 @@ void voxelizeColumn(Triangle t, ivec2 column) {
     }
 }
 
-// Claims `count` consecutive tile slots; false when they do not fit.
+// Claims `count` consecutive tile slots; false when they do not fit. The
+// dispatch grows to cover them (both counts only ever grow, so atomicMax
+// orders concurrent claims).
 bool reserveTiles(uint count, out uint slot) {
     uint seen = 0u;
     for (;;) {
         if (seen + count > VOXC_MAX_TILES) return false;
-        uint before = atomicCompSwap(indirect[0], seen, seen + count);
-        if (before == seen) {
-            slot = seen;
-            return true;
-        }
+        uint before = atomicCompSwap(indirect[3], seen, seen + count);
+        if (before == seen) break;
         seen = before;
     }
+    slot = seen;
+    uint end = seen + count;
+    atomicMax(indirect[0], min(end, VOXC_TILE_ROW));
+    atomicMax(indirect[1], (end + VOXC_TILE_ROW - 1u) / VOXC_TILE_ROW);
+    return true;
 }
 
 void trianglePhase() {
@@ -219,7 +223,9 @@ void trianglePhase() {
 }
 
 void tilePhase() {
-    uvec4 item = tiles[gl_WorkGroupID.x].item;
+    uint tileIndex = gl_WorkGroupID.y * VOXC_TILE_ROW + gl_WorkGroupID.x;
+    if (tileIndex >= indirect[3]) return;  // the last row's tail
+    uvec4 item = tiles[tileIndex].item;
     Triangle t;
     if (!loadTriangle(item.x, item.y, int(item.z), t)) return;
     int tilesPerRow = (t.hi.x - t.lo.x + int(VOXC_TILE)) / int(VOXC_TILE);

@@ -19,8 +19,6 @@ uint claimVoxel(ivec3 voxel, uint mode) {
     // Bounded: a fragment shader's helper invocations get undefined atomic
     // results (and have no side effects). A real invocation never gets near
     // the bound; if one did, it is counted as dropped, like a full list.
-    // One exit after the loop (a break, no return inside it): llvmpipe ran
-    // the code after a loop for lanes that had returned from inside it.
     bool published = false;
     for (uint spins = 0u; spins < VOXEL_CLAIM_SPINS; ++spins) {
         value = atomicCompSwap(voxelIndex[at], 0u, VOXEL_INDEX_LOCKED);

@@ -16,10 +16,16 @@ DVSGI_CONST(uint, VOXC_TILE, 8);
 // instead of being walked by its one invocation (a Cornell wall at 128^3 is
 // 16384 columns: serial, it would hold the whole dispatch back).
 DVSGI_CONST(uint, VOXC_SMALL_COLUMNS, 32);
-// Tile work items one triangle phase can queue (the indirect dispatch's x
-// count stays within maxComputeWorkGroupCount[0] >= 65535). A triangle whose
-// tiles no longer fit is walked by its own invocation: slower, same result.
-DVSGI_CONST(uint, VOXC_MAX_TILES, 65535);
+// Tile work items one triangle phase can queue (16 MiB of VoxcTile). A
+// triangle whose tiles no longer fit is walked by its own invocation: slower,
+// same result. 65535 (the old bound, one dispatch row) overflowed on Sponza at
+// 512^3, where the serial walks took 0.58 s on an H200.
+DVSGI_CONST(uint, VOXC_MAX_TILES, 1u << 20);
+// The tile phase's indirect dispatch is VOXC_TILE_ROW workgroups wide (the
+// least maxComputeWorkGroupCount[0] Vulkan allows) and as many rows high as
+// the queued tiles need. Its buffer: x = min(tiles, VOXC_TILE_ROW), y = rows,
+// z = 1, w = tiles queued.
+DVSGI_CONST(uint, VOXC_TILE_ROW, 65535);
 
 DVSGI_CONST(uint, VOXC_PHASE_TRIANGLES, 0);
 DVSGI_CONST(uint, VOXC_PHASE_TILES, 1);
@@ -58,7 +64,7 @@ DVSGI_CONST(uint, BIND_VOXC_INDICES, 6);
 DVSGI_CONST(uint, BIND_VOXC_GROUPS, 7);
 DVSGI_CONST(uint, BIND_VOXC_TILES, 8);     // VoxcTile[VOXC_MAX_TILES]
 DVSGI_CONST(uint, BIND_VOXC_LIST, 10);     // occupied-voxel list (appended to)
-DVSGI_CONST(uint, BIND_VOXC_INDIRECT, 9);  // uint[4]: the tile phase's dispatch (x = tiles queued), y = 1, z = 1
+DVSGI_CONST(uint, BIND_VOXC_INDIRECT, 9);  // uint[4]: the tile phase's dispatch (see VOXC_TILE_ROW)
 
 // scene::Vertex as floats: position 0-2, normal 3-5, uv 6-7, tangent 8-11.
 DVSGI_CONST(uint, VOXC_VERTEX_FLOATS, 12);

@@ -93,7 +93,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     const VkPipelineStageFlags2 compute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     const VkAccessFlags2 readWrite = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
     tracker.buffer(indirect_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT).flush(cmd);
-    const uint32_t reset[4] = {0, 1, 1, 0};  // no tiles queued; y = z = 1
+    const uint32_t reset[4] = {0, 1, 1, 0};  // no tiles queued: an empty dispatch
     vkCmdUpdateBuffer(cmd, indirect_.handle(), 0, sizeof(reset), reset);
 
     tracker.image(v.accum, gpu::use::ComputeReadWrite)
@@ -131,7 +131,8 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     // commute, but two dispatches writing the volumes still need the barrier.
     tracker.image(v.accum, gpu::use::ComputeReadWrite)
         .buffer(v.index, gpu::use::BufferComputeReadWrite)
-        .buffer(indirect_, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT)
+        .buffer(indirect_, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | compute,
+                VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT)
         .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)
         .flush(cmd);
