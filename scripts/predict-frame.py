@@ -5,7 +5,8 @@ Reads a `dvsgi bench` JSON (its first measurement's per-pass modelled bytes,
 which depend only on sizes and voxel counts, not on the device that ran it) and
 divides the bytes of an "everything dynamic" frame by a memory bandwidth:
 every pass of the measured frame, plus clearing and voxelizing all geometry
-(`clear all voxels`, `voxelize static`) in place of the dynamic clear. Cone
+(`clear occupied voxels`, or `clear all voxels` in JSONs from before
+2026-11-28, and `voxelize static`) in place of the dynamic clear. Cone
 samples count as zero in the model, so this is a lower bound on the frame time.
 
 usage: predict-frame.py BENCH.json BANDWIDTH_GB_PER_S

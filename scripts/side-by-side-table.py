@@ -6,7 +6,7 @@ voxelization) with the speed-up. Usage: side-by-side-table.py DIR BASE CURRENT""
 import glob, json, os, sys
 
 out_dir, base_rev, cur_rev = sys.argv[1], sys.argv[2], sys.argv[3]
-STATIC = ("clear all voxels", "voxelize static")
+STATIC = ("clear all voxels", "clear occupied voxels", "voxelize static")
 
 
 def load(path):

@@ -27,7 +27,16 @@ DVSGI_CONST(uint, BIND_VOX_ACCUM, 3);
 DVSGI_CONST(uint, BIND_VOX_INDEX, 4);  // slot index volume (claimed)
 DVSGI_CONST(uint, BIND_VOX_LIST, 5);  // occupied-voxel list (a claimed slot appends its voxel)
 
-// Dynamic-voxel clear: over the list's dynamic entries (VOXEL_LIST_GROUP per workgroup).
+// Clearing listed voxels (clear_listed.comp): over the list's dynamic entries,
+// or over every entry (VOXEL_LIST_GROUP per workgroup).
+DVSGI_CONST(uint, CLEAR_LISTED_DYNAMIC, 0);  // entries [counts.y, counts.x): last frame's dynamic voxels
+DVSGI_CONST(uint, CLEAR_LISTED_ALL, 1);      // entries [0, counts.x): every occupied voxel
+
+struct ClearListedPush {
+    uvec4 scope;  // x CLEAR_LISTED_*
+};
+DVSGI_CHECK_SIZE(ClearListedPush, 16);
+
 DVSGI_CONST(uint, BIND_CLEAR_GRID, 0);
 DVSGI_CONST(uint, BIND_CLEAR_ACCUM, 1);
 DVSGI_CONST(uint, BIND_CLEAR_LIST, 2);

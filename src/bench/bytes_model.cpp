@@ -64,6 +64,11 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         const uint64_t slots = in.slots ? in.slots : vxgi::defaultSlotCapacity(in.voxels);
         out.push_back({"clear all voxels", 0,
                        n3 * (kIndexBytes + kVoxelLightBytes) + slots * (kAttributeBytes + kVoxelLightBytes)});
+        // A re-voxelization of volumes voxelized before clears only what the
+        // list holds (all of last frame's voxels, static and dynamic), as the
+        // dynamic clear does.
+        out.push_back({"clear occupied voxels", occupied * kListEntryBytes,
+                       occupied * (kAttributeBytes + 2 * kVoxelLightBytes + kIndexBytes)});
         out.push_back({"voxelize static", in.staticGeometryBytes,
                        staticVoxels * (kAttributeBytes + kIndexBytes + kListEntryBytes)});
         // The voxels dynamic geometry wrote last frame (their list entries);

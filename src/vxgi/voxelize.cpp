@@ -31,7 +31,7 @@ const uint32_t kFrag[] = {
 #include "shaders/voxelize.frag.inc"
 };
 const uint32_t kClear[] = {
-#include "shaders/clear_dynamic.comp.inc"
+#include "shaders/clear_listed.comp.inc"
 };
 
 // What Auto picks on CPU devices (lavapipe), from the bench runs in
@@ -77,7 +77,9 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
                             {sh::BIND_CLEAR_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                             {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                             {sh::BIND_CLEAR_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
-    clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear dynamic voxels");
+    clearLayout.pushConstantBytes = sizeof(sh::ClearListedPush);
+    clearLayout.pushConstantStages = cs;
+    clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear listed voxels");
     if (resolveVoxelizer(ctx, kind) == VoxelizerKind::Compute) {
         hardware_ = false;
         compute_ = std::make_unique<ComputeVoxelizer>(ctx, scene);
@@ -126,6 +128,16 @@ void Voxelizer::clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const Voxel
 void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                              gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "clear dynamic voxels");
+    clearListed(cmd, tracker, v, sh::CLEAR_LISTED_DYNAMIC);
+}
+
+void Voxelizer::clearOccupied(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                              gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "clear occupied voxels");
+    clearListed(cmd, tracker, v, sh::CLEAR_LISTED_ALL);
+}
+
+void Voxelizer::clearListed(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, uint32_t scope) const {
     tracker.image(v.accum, gpu::use::ComputeWrite)
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)
@@ -141,7 +153,10 @@ void Voxelizer::clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
         .storageImage(sh::BIND_CLEAR_RADIANCE, v.radiance.view())
         .storageBuffer(sh::BIND_CLEAR_INDEX, v.index.handle())
         .push(ctx_, cmd, clear_);
-    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, dynamicGroups));
+    gpu::pushConstants(cmd, clear_, VK_SHADER_STAGE_COMPUTE_BIT, sh::ClearListedPush{glm::uvec4(scope, 0u, 0u, 0u)});
+    dispatchOverList(cmd, v.list,
+                     scope == sh::CLEAR_LISTED_ALL ? offsetof(sh::VoxelListHeader, allGroups)
+                                                   : offsetof(sh::VoxelListHeader, dynamicGroups));
 }
 
 void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,

@@ -46,14 +46,21 @@ public:
     Voxelizer(const Voxelizer&) = delete;
     Voxelizer& operator=(const Voxelizer&) = delete;
 
-    // Zeroes index, attributes, direct light and radiance: the start of a
-    // static re-voxelization (the occupied-voxel list is reset beside it).
+    // Zeroes index, attributes, direct light and radiance of the whole grid:
+    // the start of a static voxelization into volumes whose contents are
+    // unknown (new ones). The occupied-voxel list is reset beside it.
     void clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                   gpu::GpuTimers* timers) const;
     // Zeroes the voxels and slots of the list's dynamic entries (what dynamic
     // geometry wrote last frame); VoxelListPass::dropDynamic then frees them.
     void clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                       gpu::GpuTimers* timers) const;
+    // Zeroes every voxel and slot the list holds (static and dynamic): the
+    // start of a static re-voxelization into volumes that were cleared and
+    // voxelized before, where no other voxel can hold anything. The list is
+    // reset beside it.
+    void clearOccupied(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
+                       gpu::GpuTimers* timers) const;
     // Voxelizes the static or the dynamic draws of the scene, appending newly
     // occupied voxels to the list (VoxelListPass::finish then counts them).
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
@@ -62,6 +69,7 @@ public:
     VoxelizerKind kind() const { return compute_ ? VoxelizerKind::Compute : VoxelizerKind::Geometry; }
 
 private:
+    void clearListed(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, uint32_t scope) const;
     void voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& scene, const VoxelVolumes& volumes,
                         bool dynamic) const;
 

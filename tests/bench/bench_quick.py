@@ -80,7 +80,7 @@ check("quick: occupied and dynamic voxels counted",
       vc.get("occupied", 0) > 0 and 0 < vc.get("dynamic", 0) <= vc.get("occupied", 0), str(vc))
 check("quick: bytes model inputs recorded", m.get("bytes_model", {}).get("occupied_voxels") == vc.get("occupied")
       and m.get("bytes_model", {}).get("voxels") == 32, str(m.get("bytes_model")))
-modelled = ("clear all voxels", "voxelize static", "clear dynamic voxels", "voxelize dynamic", "shadow maps",
+modelled = ("clear occupied voxels", "voxelize static", "clear dynamic voxels", "voxelize dynamic", "shadow maps",
             "voxel direct light", "voxel bounce", "voxel filtering (bounce)", "gbuffer", "direct lighting",
             "cone tracing", "composite")
 for name in modelled:

@@ -40,6 +40,9 @@ TEST(BytesModel, HandComputedCase) {
     // 32^3 = 32768 voxels with a 4-byte index and RGBA16F radiance each;
     // 16384 slots with 52 attribute bytes (13 x R32F) and RGBA16F direct light each.
     expectPass(p, "clear all voxels", 0, 32768 * (4 + 8) + 16384 * (52 + 8));
+    // Re-voxelizing: the 1000 listed voxels' entries read; their attributes,
+    // direct light, radiance and index zeroed.
+    expectPass(p, "clear occupied voxels", 1000 * 4, 1000 * (52 + 8 + 8 + 4));
     // 900 static voxels; 100 dynamic ones; attributes, index and a 4-byte list entry each.
     expectPass(p, "voxelize static", 1000, 900 * (52 + 4 + 4));
     // Attributes, direct light, radiance and index of last frame's dynamic voxels.
@@ -61,7 +64,7 @@ TEST(BytesModel, HandComputedCase) {
     expectPass(p, "cone tracing", 14400 * 20, 14400 * 16);
     expectPass(p, "composite", 14400 * 32, 14400 * 16);
     EXPECT_EQ(findPass(p, "upsample"), nullptr) << "no upsample at full trace size";
-    EXPECT_EQ(p.size(), 13u);
+    EXPECT_EQ(p.size(), 14u);
 }
 
 TEST(BytesModel, BouncesScaleTheBouncePassesOnly) {

@@ -41,7 +41,8 @@ TEST_F(RendererUpdate, MovedStaticNodeIsReVoxelizedWithoutStaleVoxels) {
     scene::Scene s;
     const int white = addMaterial(s, glm::vec3(0.8f));
     addQuad(s, white, glm::vec3(0), 1.0f);                       // floor, static
-    const int block = addQuad(s, white, glm::vec3(-0.5f, 0.5f, 0.0f), 0.2f);  // static too
+    // Static too, and emissive: stale radiance where it was would light the floor.
+    const int block = addQuad(s, addMaterial(s, glm::vec3(0.8f), glm::vec3(2.0f)), glm::vec3(-0.5f, 0.5f, 0.0f), 0.2f);
     addTopDownCamera(s, 2.0f, glm::radians(60.0f));
     render::RenderSettings rs;
     rs.width = rs.height = 16;
@@ -51,6 +52,7 @@ TEST_F(RendererUpdate, MovedStaticNodeIsReVoxelizedWithoutStaleVoxels) {
     rs.voxelBoxMax = glm::vec3(1.0f);
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
+    rs.emitterLights = false;  // the block's emission stays in the voxel radiance, which the floor then sees
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     const std::vector<float> before = counts(r);
@@ -89,6 +91,30 @@ TEST_F(RendererUpdate, MovedStaticNodeIsReVoxelizedWithoutStaleVoxels) {
         if (floor[i] > 0.0f) {
             ASSERT_GT(after[i], 0.0f) << "floor voxel lost at index " << i;
         }
+
+    // Re-voxelizing clears only the voxels the list held (not the whole grid):
+    // the moved renderer's index volume and image equal a new renderer's that
+    // starts with the block in its new place.
+    scene::Scene moved = s;
+    moved.nodes[size_t(block)].translation.x = 0.5f;
+    render::Renderer m(context(), moved, rs);
+    m.renderFrame();
+    const std::vector<uint32_t> gotIndex = vxgi::readVoxelIndex(context(), *r.volumes());
+    const std::vector<uint32_t> wantIndex = vxgi::readVoxelIndex(context(), *m.volumes());
+    ASSERT_EQ(gotIndex.size(), wantIndex.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < gotIndex.size(); ++i) differ += (gotIndex[i] != 0) != (wantIndex[i] != 0);
+    EXPECT_EQ(differ, 0u) << "voxels occupied in one index volume and not the other";
+    const image::ImageRGBA32F got = r.readOutput(), want = m.readOutput();
+    ASSERT_EQ(got.rgba.size(), want.rgba.size());
+    double diff = 0.0, sum = 0.0;
+    for (size_t i = 0; i < want.rgba.size(); ++i) {
+        diff += std::abs(double(got.rgba[i]) - want.rgba[i]);
+        sum += std::abs(double(want.rgba[i]));
+    }
+    std::printf("  moved vs fresh: mean relative difference %.3g (image mean %.4g)\n", diff / sum,
+                sum / double(want.rgba.size()));
+    EXPECT_LT(diff / sum, 1e-5);
 }
 
 // A per-frame change applied to a running Renderer gives the image a new

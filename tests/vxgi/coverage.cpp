@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -59,8 +61,18 @@ void expectCoverage(const CoverageReport& r, vxgi::VoxelizerKind kind) {
 
 CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSpec>& grids, const std::string& label,
                            vxgi::VoxelizerKind kind) {
+    // DVSGI_TEST_HARDWARE_CONSERVATIVE=1 runs the geometry path with
+    // VK_EXT_conservative_rasterization instead of the geometry-shader
+    // dilation (scripts/gpu-check.sh does, on GPUs that have it).
+    const char* hwEnv = std::getenv("DVSGI_TEST_HARDWARE_CONSERVATIVE");
+    const bool hardware = kind == vxgi::VoxelizerKind::Geometry && hwEnv && std::string(hwEnv) == "1";
+    if (hardware && !context().features.conservativeRaster) {
+        ADD_FAILURE() << "DVSGI_TEST_HARDWARE_CONSERVATIVE=1, but " << context().deviceName
+                      << " lacks VK_EXT_conservative_rasterization";
+        return {};
+    }
     gpuscene::SceneGpu sceneGpu(context(), s);
-    vxgi::Voxelizer voxelizer(context(), sceneGpu, false, kind);
+    vxgi::Voxelizer voxelizer(context(), sceneGpu, hardware, kind);
     CoverageReport total;
     size_t triangles = 0;
     for (size_t g = 0; g < grids.size(); ++g) {
@@ -100,9 +112,9 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
         total.extras += r.extras;
         total.farExtras += r.farExtras;
     }
-    std::printf("[%s, %s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
+    std::printf("[%s, %s%s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
                 "extras %zu (%.1f%% of the reference), extras beyond 1 voxel %zu\n",
-                label.c_str(), vxgi::voxelizerName(kind), triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
+                label.c_str(), vxgi::voxelizerName(kind), voxelizer.hardwareConservative() ? " (hardware conservative)" : "", triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
                 total.misses, total.extras, total.reference ? 100.0 * double(total.extras) / double(total.reference) : 0.0,
                 total.farExtras);
     return total;
