@@ -10,8 +10,9 @@
 #   scripts/gpu-check.sh --bundle DIR [OUT_DIR]    use scripts/gpu-bundle.sh's DIR
 #                                                  on a machine that cannot build
 #
-# Budget: about 8 minutes. The benches come first, as the figures a short
-# device lease most needs; each caps its measuring (DVSGI_GPU_BENCH_SECONDS,
+# Budget: 8 minutes; on an H200 (2026-11-28) its parts took about 1.5 minutes
+# together. The benches come first, as the figures a short device lease most
+# needs; each caps its measuring (DVSGI_GPU_BENCH_SECONDS,
 # default 8 s per measurement) and its whole run (DVSGI_GPU_BENCH_TIMEOUT,
 # 300 s; DVSGI_GPU_BENCH_GEOMETRY_TIMEOUT, 120 s); DVSGI_GPU_SKIP_BENCH=1 leaves
 # them out. Each test suite: DVSGI_GPU_TEST_TIMEOUT (300 s); each quality
