@@ -267,7 +267,13 @@ void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
 std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
     if (!voxelizer_) return {};
     timers_->reset();
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordStaticVoxels(cmd); });
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        recordStaticVoxels(cmd);
+        list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
+    });
+    // As after a frame: claims dropped for want of slots left index words
+    // that no list entry names, which only new, larger volumes clear.
+    if (growVoxelSlots()) return revoxelizeStatic();
     staticDirty_ = false;
     return timers_->results();
 }

@@ -346,5 +346,31 @@ TEST_F(Converge, RunningOutOfVoxelSlotsGrowsThemAndRendersTheSameFrame) {
     for (size_t i = 0; i < ia.rgba.size(); ++i) ASSERT_NEAR(ib.rgba[i], ia.rgba[i], 1e-4f * (1.0f + ia.rgba[i])) << i;
 }
 
+// The bench's path: static re-voxelizations in submissions of their own
+// (Renderer::revoxelizeStatic), the second of which clears only the listed
+// voxels. Claims dropped in the first leave index words no list entry names;
+// the renderer must grow the storage then, not carry them into the second.
+TEST_F(Converge, RunningOutOfSlotsInAStaticReVoxelizationGrowsThem) {
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), 0.9f);
+    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    render::RenderSettings rs = boxSettings();
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 2;
+    render::Renderer ref(context(), s, rs);
+    ref.renderFrame();
+    rs.voxelSlots = shader::VOXEL_SLOT_ROW;
+    render::Renderer grown(context(), s, rs);
+    grown.revoxelizeStatic();
+    grown.revoxelizeStatic();
+    grown.renderFrame();
+    EXPECT_GT(grown.volumes()->slots, shader::VOXEL_SLOT_ROW);
+    const Rgba16Volume a = readRgba16(ref.volumes()->radiance), b = readRgba16(grown.volumes()->radiance);
+    EXPECT_NEAR(wallMean(b), wallMean(a), 1e-4 * wallMean(a));
+    const image::ImageRGBA32F ia = ref.readOutput(), ib = grown.readOutput();
+    ASSERT_EQ(ia.rgba.size(), ib.rgba.size());
+    for (size_t i = 0; i < ia.rgba.size(); ++i) ASSERT_NEAR(ib.rgba[i], ia.rgba[i], 1e-4f * (1.0f + ia.rgba[i])) << i;
+}
+
 }  // namespace
 }  // namespace dvsgi::test
