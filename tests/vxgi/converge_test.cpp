@@ -320,25 +320,32 @@ TEST_F(Converge, MovedObjectLeavesNoLastingGlowUnderFeedback) {
     EXPECT_LT(std::abs(left), 0.01 * glow) << "after " << kFrames << " frames";
 }
 
-TEST_F(Converge, RunningOutOfVoxelSlotsGrowsThemAndRendersTheSameFrame) {
+// Walls 29 voxels wide: about 5000 occupied voxels, more than one row of slots.
+scene::Scene slotGrowthScene() {
     scene::Scene s;
-    // Walls 29 voxels wide: about 5000 occupied voxels, more than one row of slots.
     addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), 0.9f);
     addTopDownCamera(s, 0.0f, glm::radians(60.0f));
+    return s;
+}
+
+render::RenderSettings slotGrowthSettings(uint32_t slots) {
     render::RenderSettings rs = boxSettings();
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 2;
-    render::Renderer ref(context(), s, rs);
-    ref.renderFrame();
-    rs.voxelSlots = shader::VOXEL_SLOT_ROW;
-    render::Renderer grown(context(), s, rs);
-    grown.renderFrame();
-    const uint32_t slots = grown.volumes()->slots;
-    std::printf("  %u slots at first, %u after growing (default %u)\n", shader::VOXEL_SLOT_ROW, slots,
-                ref.volumes()->slots);
-    EXPECT_GT(slots, shader::VOXEL_SLOT_ROW);
-    grown.renderFrame();  // a later frame (dynamic path) needs no more
-    EXPECT_EQ(grown.volumes()->slots, slots);
+    rs.voxelSlots = slots;
+    return rs;
+}
+
+// A renderer with the default slots, rendered once, and one that starts with a single row.
+struct SlotGrowth {
+    scene::Scene scene = slotGrowthScene();
+    render::Renderer ref{context(), scene, slotGrowthSettings(0)};
+    render::Renderer grown{context(), scene, slotGrowthSettings(shader::VOXEL_SLOT_ROW)};
+    SlotGrowth() { ref.renderFrame(); }
+};
+
+// The grown renderer's radiance and image against the one that had enough slots from the start.
+void expectSameAsEnoughSlots(const render::Renderer& ref, const render::Renderer& grown) {
     const Rgba16Volume a = readRgba16(ref.volumes()->radiance), b = readRgba16(grown.volumes()->radiance);
     EXPECT_NEAR(wallMean(b), wallMean(a), 1e-4 * wallMean(a));
     const image::ImageRGBA32F ia = ref.readOutput(), ib = grown.readOutput();
@@ -346,30 +353,30 @@ TEST_F(Converge, RunningOutOfVoxelSlotsGrowsThemAndRendersTheSameFrame) {
     for (size_t i = 0; i < ia.rgba.size(); ++i) ASSERT_NEAR(ib.rgba[i], ia.rgba[i], 1e-4f * (1.0f + ia.rgba[i])) << i;
 }
 
+TEST_F(Converge, RunningOutOfVoxelSlotsGrowsThemAndRendersTheSameFrame) {
+    SlotGrowth g;
+    render::Renderer &ref = g.ref, &grown = g.grown;
+    grown.renderFrame();
+    const uint32_t slots = grown.volumes()->slots;
+    std::printf("  %u slots at first, %u after growing (default %u)\n", shader::VOXEL_SLOT_ROW, slots,
+                ref.volumes()->slots);
+    EXPECT_GT(slots, shader::VOXEL_SLOT_ROW);
+    grown.renderFrame();  // a later frame (dynamic path) needs no more
+    EXPECT_EQ(grown.volumes()->slots, slots);
+    expectSameAsEnoughSlots(ref, grown);
+}
+
 // The bench's path: static re-voxelizations in submissions of their own
 // (Renderer::revoxelizeStatic), the second of which clears only the listed
 // voxels. Claims dropped in the first leave index words no list entry names;
 // the renderer must grow the storage then, not carry them into the second.
 TEST_F(Converge, RunningOutOfSlotsInAStaticReVoxelizationGrowsThem) {
-    scene::Scene s;
-    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), 0.9f);
-    addTopDownCamera(s, 0.0f, glm::radians(60.0f));
-    render::RenderSettings rs = boxSettings();
-    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-    rs.voxelLight.bounces = 2;
-    render::Renderer ref(context(), s, rs);
-    ref.renderFrame();
-    rs.voxelSlots = shader::VOXEL_SLOT_ROW;
-    render::Renderer grown(context(), s, rs);
-    grown.revoxelizeStatic();
-    grown.revoxelizeStatic();
-    grown.renderFrame();
-    EXPECT_GT(grown.volumes()->slots, shader::VOXEL_SLOT_ROW);
-    const Rgba16Volume a = readRgba16(ref.volumes()->radiance), b = readRgba16(grown.volumes()->radiance);
-    EXPECT_NEAR(wallMean(b), wallMean(a), 1e-4 * wallMean(a));
-    const image::ImageRGBA32F ia = ref.readOutput(), ib = grown.readOutput();
-    ASSERT_EQ(ia.rgba.size(), ib.rgba.size());
-    for (size_t i = 0; i < ia.rgba.size(); ++i) ASSERT_NEAR(ib.rgba[i], ia.rgba[i], 1e-4f * (1.0f + ia.rgba[i])) << i;
+    SlotGrowth g;
+    g.grown.revoxelizeStatic();
+    g.grown.revoxelizeStatic();
+    g.grown.renderFrame();
+    EXPECT_GT(g.grown.volumes()->slots, shader::VOXEL_SLOT_ROW);
+    expectSameAsEnoughSlots(g.ref, g.grown);
 }
 
 }  // namespace
