@@ -58,15 +58,14 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
     const uint64_t bounces = in.bounces;
 
     if (in.voxels > 0) {
-        // The old contents are unknown: every index and radiance texel and every
-        // slot's attributes and direct light are written (the per-voxel passes
-        // write occupied voxels only).
+        // The whole-grid clear (the renderer's before 2026-11-28, modelled for
+        // older JSONs): every index and radiance texel and every slot's
+        // attributes and direct light are written.
         const uint64_t slots = in.slots ? in.slots : vxgi::defaultSlotCapacity(in.voxels);
         out.push_back({"clear all voxels", 0,
                        n3 * (kIndexBytes + kVoxelLightBytes) + slots * (kAttributeBytes + kVoxelLightBytes)});
-        // A re-voxelization of volumes voxelized before clears only what the
-        // list holds (all of last frame's voxels, static and dynamic), as the
-        // dynamic clear does.
+        // A static voxelization clears only what the list holds (all of last
+        // frame's voxels, static and dynamic), as the dynamic clear does.
         out.push_back({"clear occupied voxels", occupied * kListEntryBytes,
                        occupied * (kAttributeBytes + 2 * kVoxelLightBytes + kIndexBytes)});
         out.push_back({"voxelize static", in.staticGeometryBytes,

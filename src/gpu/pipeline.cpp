@@ -171,21 +171,6 @@ Descriptors& Descriptors::storageImage(uint32_t binding, VkImageView view) {
     return *this;
 }
 
-Descriptors& Descriptors::storageImages(uint32_t binding, std::span<const VkImageView> views) {
-    Entry e{binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {}, {}};
-    for (VkImageView v : views) e.images.push_back({VK_NULL_HANDLE, v, VK_IMAGE_LAYOUT_GENERAL});
-    entries_.push_back(std::move(e));
-    return *this;
-}
-
-Descriptors& Descriptors::sampledImages(uint32_t binding, std::span<const VkImageView> views, VkSampler sampler,
-                                        VkImageLayout layout) {
-    Entry e{binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, {}};
-    for (VkImageView v : views) e.images.push_back({sampler, v, layout});
-    entries_.push_back(std::move(e));
-    return *this;
-}
-
 Descriptors& Descriptors::sampledImage(uint32_t binding, VkImageView view, VkSampler sampler, VkImageLayout layout) {
     entries_.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {{sampler, view, layout}}, {}});
     return *this;

@@ -76,10 +76,6 @@ public:
     Descriptors& storageImage(uint32_t binding, VkImageView view);
     Descriptors& sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
                               VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    // Arrays of images at one binding (e.g. the six directional volumes).
-    Descriptors& storageImages(uint32_t binding, std::span<const VkImageView> views);
-    Descriptors& sampledImages(uint32_t binding, std::span<const VkImageView> views, VkSampler sampler,
-                               VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     Descriptors& storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
                                VkDeviceSize range = VK_WHOLE_SIZE);
     Descriptors& uniformBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,

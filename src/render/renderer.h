@@ -190,10 +190,6 @@ private:
     uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
-    // The volumes were cleared and voxelized since they were created: only
-    // the voxels their list holds can be non-zero (false for new volumes,
-    // whose contents are unknown).
-    bool volumesListed_ = false;
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
     std::unique_ptr<gpu::Buffer> listHeader_;  // host-visible copy of the list header after voxelization

@@ -46,9 +46,10 @@ public:
     Voxelizer(const Voxelizer&) = delete;
     Voxelizer& operator=(const Voxelizer&) = delete;
 
-    // Zeroes index, attributes, direct light and radiance of the whole grid:
-    // the start of a static voxelization into volumes whose contents are
-    // unknown (new ones). The occupied-voxel list is reset beside it.
+    // Zeroes index, attributes, direct light and radiance of the whole grid,
+    // whatever the list holds (the voxelization tests' fixtures; the Renderer
+    // relies on new volumes starting zeroed). The occupied-voxel list is reset
+    // beside it.
     void clearAll(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                   gpu::GpuTimers* timers) const;
     // Zeroes the voxels and slots of the list's dynamic entries (what dynamic
@@ -56,9 +57,8 @@ public:
     void clearDynamic(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                       gpu::GpuTimers* timers) const;
     // Zeroes every voxel and slot the list holds (static and dynamic): the
-    // start of a static re-voxelization into volumes that were cleared and
-    // voxelized before, where no other voxel can hold anything. The list is
-    // reset beside it.
+    // start of a static voxelization, since no other voxel can hold anything
+    // (new volumes start zeroed with an empty list). The list is reset beside it.
     void clearOccupied(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
                        gpu::GpuTimers* timers) const;
     // Voxelizes the static or the dynamic draws of the scene, appending newly
