@@ -66,6 +66,7 @@ void printTable(const render::FrameStats& stats, const std::vector<render::Memor
 void printVoxelGrid(const vxgi::VoxelVolumes& v, const vxgi::Voxelizer& voxelizer) {
     const vxgi::GridSpec& g = v.grid;
     const char* how = voxelizer.kind() == vxgi::VoxelizerKind::Compute ? "compute voxelizer (exact)"
+                      : voxelizer.kind() == vxgi::VoxelizerKind::Pv    ? "progressive screen-space voxelization"
                       : voxelizer.hardwareConservative()               ? "hardware conservative rasterization"
                                                                        : "geometry-shader conservative rasterization";
     std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s, %u voxel slots\n", g.n,

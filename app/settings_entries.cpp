@@ -235,16 +235,26 @@ std::vector<Setting> imageAndVoxels() {
                      kAll, kNew},
                     {{"auto", true}, {"gs", false}}, FIELD(settings.hardwareConservative)),
              "gs", "'auto' (hardware when available) or 'gs'"),
-        with(choice({"voxelizer", kVoxels, "geometry|compute|auto", "",
+        with(choice({"voxelizer", kVoxels, "geometry|compute|auto|pv", "",
                      "how triangles become voxels: geometry = rasterized with a geometry shader (dilated, "
                      "extras within one voxel), compute = binned in compute shaders with an exact triangle/voxel "
-                     "test (needs shaderFloat64), auto = the faster one on this device type",
+                     "test (needs shaderFloat64), auto = the faster one on this device type, pv = progressive "
+                     "screen-space voxelization: kept from frame to frame, filled from the camera's G-buffer and "
+                     "cleared where depth buffers see empty space (only what the camera has seen is voxelized; "
+                     "docs/pv.md)",
                      kAll, kNew},
                     {{"geometry", vxgi::VoxelizerKind::Geometry},
                      {"compute", vxgi::VoxelizerKind::Compute},
-                     {"auto", vxgi::VoxelizerKind::Auto}},
+                     {"auto", vxgi::VoxelizerKind::Auto},
+                     {"pv", vxgi::VoxelizerKind::Pv}},
                     FIELD(settings.voxelizer)),
-             "compute", "geometry, compute or auto"),
+             "compute", "geometry, compute, auto or pv"),
+        with(integer({"pv-grid", kVoxels, "S", "samples",
+                      "--voxelizer pv: injection grid, samples along the G-buffer's longer side (the other in "
+                      "proportion); 0 = every pixel",
+                      kAll, kFrame},
+                     0, 16384, FIELD(settings.pv.grid)),
+             "256"),
         with(choice({"view", kVoxels, "MODE", "",
                      "final, or voxels:albedo|normal|emission|radiance|directional: draw that voxel volume as cubes "
                      "from the camera instead",

@@ -17,6 +17,7 @@
 #include "gpuscene/scene_gpu.h"
 #include "render/shadows.h"
 #include "shared/bounce_pass.h"
+#include "shared/pv_pass.h"
 #include "shared/scene_data.h"
 #include "shared/voxel_list_pass.h"
 #include "vxgi/aniso_filter.h"
@@ -105,6 +106,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid, settings.voxelSlots);
         voxelizer_ =
             std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative, settings.voxelizer);
+        if (voxelizer_->kind() == vxgi::VoxelizerKind::Pv) pv_ = std::make_unique<vxgi::PvVoxelizer>(ctx);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
         list_ = std::make_unique<vxgi::VoxelListPass>(ctx);
         listHeader_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::VoxelListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -146,6 +148,12 @@ void Renderer::uploadLights() {
         temporalState_.drop(lightSettleFrames());
     }
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
+    shadowViewProj_.clear();
+    shadowViewParams_.clear();
+    for (const sh::GpuShadowView& v : setup.views) {
+        shadowViewProj_.push_back(v.viewProj);
+        shadowViewParams_.push_back(v.params);
+    }
     if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {
         if (lightBytes) gpu::uploadBuffer(ctx_, *lights_, setup.lights.data(), lightBytes);
         if (viewBytes) gpu::uploadBuffer(ctx_, *views_, setup.views.data(), viewBytes);
@@ -202,6 +210,31 @@ void Renderer::updateFrameConstants() {
     f.sizes = glm::uvec4(iw, ih, lightCount_, settings_.shadowMapSize);
     f.shadowParams = glm::vec4(settings_.normalOffsetTexels, settings_.shadows ? 1.0f : 0.0f, 0.0f, 0.0f);
     gpu::uploadBuffer(ctx_, *frame_, &f, sizeof(f));
+    if (pv_) uploadPvViews();
+}
+
+void Renderer::uploadPvViews() {
+    // A shadow map's slope-scaled bias (1.5 texels of depth slope) puts a lit
+    // surface behind where it is; four texels of tolerance keep the voxels
+    // that hold such surfaces up to grazing angles of about 70 degrees.
+    constexpr float kShadowTexels = 4.0f;
+    std::vector<sh::PvDepthView> views;
+    const glm::mat4 camera = viewProjection();
+    views.push_back({camera, glm::inverse(camera), glm::vec4(sh::PV_CAMERA_LAYER, 0.0f, 0.0f, 0.0f)});
+    for (size_t i = 0; i < shadowViewProj_.size(); ++i) {
+        const glm::vec4& p = shadowViewParams_[i];
+        const bool perspective = p.y > 0.5f;
+        views.push_back({shadowViewProj_[i], glm::inverse(shadowViewProj_[i]),
+                         glm::vec4(float(i), perspective ? 0.0f : kShadowTexels * p.x,
+                                   perspective ? kShadowTexels * p.x : 0.0f, 0.0f)});
+    }
+    const VkDeviceSize bytes = views.size() * sizeof(sh::PvDepthView);
+    if (!pvViews_ || pvViews_->size() != bytes)
+        pvViews_ = std::make_unique<gpu::Buffer>(ctx_, bytes,
+                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                                 gpu::MemoryUse::Device, "pv depth views");
+    gpu::uploadBuffer(ctx_, *pvViews_, views.data(), bytes);
+    pvViewCount_ = uint32_t(views.size());
 }
 
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
@@ -216,7 +249,9 @@ void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
 // bounces of Fixed/Converge; a Feedback frame records its one bounce here.
 void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
-    if (voxelizer_) {
+    if (pv_) {
+        recordProgressiveVoxels(cmd);
+    } else if (voxelizer_) {
         // The occupied-voxel list holds the static voxels, then this frame's
         // dynamic ones; the per-voxel passes below run over it.
         if (staticDirty_) {
@@ -229,7 +264,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
         list_->finish(cmd, tracker_, *volumes_, false);
         list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
     }
-    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, targets_->shadowMap, t);
+    if (!pv_) shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, targets_->shadowMap, t);
     if (!voxelizer_) return;
     const vxgi::ShadowInputs shadows{*lights_, lightCount_, *views_, targets_->shadowMap, samplers_->shadow.handle(),
                                      settings_.shadows};
@@ -259,8 +294,24 @@ void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     list_->finish(cmd, tracker_, *volumes_, true);
 }
 
+// Progressive voxelization needs the frame's depth buffers first: shadow
+// maps and G-buffer do not depend on the voxels, so they move ahead of them.
+void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
+    gpu::GpuTimers* t = timers_.get();
+    FrameTargets& f = *targets_;
+    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, f.shadowMap, t);
+    gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
+    const vxgi::PvDepthInputs depth{f.gbuffer.depth, f.shadowMap, *pvViews_, pvViewCount_, samplers_->point.handle()};
+    pv_->cleanup(cmd, tracker_, *volumes_, depth, t);
+    const vxgi::PvGBufferInputs g{f.gbuffer.depth, f.gbuffer.base,   f.gbuffer.normal,
+                                  f.gbuffer.emission, *frame_, samplers_->point.handle()};
+    pv_->inject(cmd, tracker_, *volumes_, g, settings_.pv, t);
+    list_->finish(cmd, tracker_, *volumes_, true);
+    list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
+}
+
 std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
-    if (!voxelizer_) return {};
+    if (!voxelizer_ || pv_) return {};
     timers_->reset();
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         recordStaticVoxels(cmd);
@@ -280,7 +331,7 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
         voxelView_->record(cmd, tracker_, *volumes_, *frame_, f.output, settings_.view, t);
         return;
     }
-    gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
+    if (!pv_) gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);  // pv: before the voxels
     const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {

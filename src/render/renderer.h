@@ -21,6 +21,7 @@
 #include "scene/scene.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_light_settings.h"
+#include "vxgi/pv_voxelize.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::gpuscene {
@@ -48,6 +49,7 @@ struct RenderSettings {
     glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
     bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
     vxgi::VoxelizerKind voxelizer = vxgi::VoxelizerKind::Auto;  // resolved by vxgi::resolveVoxelizer
+    vxgi::PvSettings pv;              // --voxelizer pv: progressive voxelization from the frame's buffers
     ViewSettings view;
     vxgi::VoxelLightSettings voxelLight;
     // Per-light occlusion mode for the voxel light pass, by light name
@@ -149,6 +151,8 @@ private:
     void uploadLights();
     void recordVoxels(VkCommandBuffer cmd);
     void recordStaticVoxels(VkCommandBuffer cmd);
+    void recordProgressiveVoxels(VkCommandBuffer cmd);
+    void uploadPvViews();
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
@@ -178,6 +182,14 @@ private:
     std::unique_ptr<CompositePass> composite_;
     std::unique_ptr<vxgi::VoxelVolumes> volumes_;
     std::unique_ptr<vxgi::Voxelizer> voxelizer_;
+    // --voxelizer pv: fills the volumes from the G-buffer, which is then
+    // recorded before the voxel passes; its depth views are the camera's and
+    // the shadow maps' (shader::PvDepthView, camera first).
+    std::unique_ptr<vxgi::PvVoxelizer> pv_;
+    std::unique_ptr<gpu::Buffer> pvViews_;
+    uint32_t pvViewCount_ = 0;
+    std::vector<glm::mat4> shadowViewProj_;  // the uploaded shadow views' matrices
+    std::vector<glm::vec4> shadowViewParams_;
     std::unique_ptr<VoxelViewPass> voxelView_;
     std::unique_ptr<vxgi::VoxelListPass> list_;
     std::unique_ptr<vxgi::InjectPass> inject_;

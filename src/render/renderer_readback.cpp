@@ -51,6 +51,7 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"voxel direct light", volumes_->direct.memorySize()});
         items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
+        if (pv_) items.push_back({"pv last frame's attributes and list", pv_->memoryBytes()});
     }
     return items;
 }

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <stdexcept>
 
 #include "gpu/tracker.h"
 #include "gpu/context.h"
@@ -62,13 +63,14 @@ const char* voxelizerName(VoxelizerKind kind) {
     case VoxelizerKind::Geometry: return "geometry";
     case VoxelizerKind::Compute: return "compute";
     case VoxelizerKind::Auto: return "auto";
+    case VoxelizerKind::Pv: return "pv";
     }
     return "?";
 }
 
 Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, bool hardwareConservative,
                      VoxelizerKind kind)
-    : ctx_(ctx), hardware_(hardwareConservative && ctx.features.conservativeRaster) {
+    : ctx_(ctx), hardware_(hardwareConservative && ctx.features.conservativeRaster), kind_(resolveVoxelizer(ctx, kind)) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc clearLayout;
     clearLayout.bindings = {{sh::BIND_CLEAR_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
@@ -80,7 +82,11 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
     clearLayout.pushConstantBytes = sizeof(sh::ClearListedPush);
     clearLayout.pushConstantStages = cs;
     clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear listed voxels");
-    if (resolveVoxelizer(ctx, kind) == VoxelizerKind::Compute) {
+    if (kind_ == VoxelizerKind::Pv) {
+        hardware_ = false;
+        return;
+    }
+    if (kind_ == VoxelizerKind::Compute) {
         hardware_ = false;
         compute_ = std::make_unique<ComputeVoxelizer>(ctx, scene);
         return;
@@ -162,6 +168,7 @@ void Voxelizer::clearListed(VkCommandBuffer cmd, gpu::Tracker& tracker, const Vo
 void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                          const VoxelVolumes& v, VoxelizeMode mode, gpu::GpuTimers* timers) const {
     const bool dynamic = mode == VoxelizeMode::Dynamic;
+    if (kind_ == VoxelizerKind::Pv) throw std::logic_error("the pv voxelizer is PvVoxelizer's; Voxelizer only clears");
     gpu::GpuTimerScope timer(timers, cmd, dynamic ? "voxelize dynamic" : "voxelize static");
     if (compute_) {
         compute_->voxelize(cmd, tracker, scene, v, mode);

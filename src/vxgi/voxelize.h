@@ -27,13 +27,15 @@ enum class VoxelizeMode { Static, Dynamic };
 // Which voxelizer (--voxelizer). Geometry: one fragment per (pixel column,
 // layer) of the dominant-axis projection, dilated (extras within one voxel).
 // Compute: one sample per (triangle, voxel it touches), exact. Counts differ,
-// averages agree. Auto: resolveVoxelizer's choice for the device.
-enum class VoxelizerKind { Geometry, Compute, Auto };
+// averages agree. Auto: resolveVoxelizer's choice for the device. Pv:
+// progressive screen-space voxelization from the frame's buffers
+// (pv_voxelize.h); the Voxelizer then only clears, PvVoxelizer fills.
+enum class VoxelizerKind { Geometry, Compute, Auto, Pv };
 
 // Auto -> Compute or Geometry for this device (docs/benchmarks.md has the
 // measurements behind it); other kinds are returned as they are.
 VoxelizerKind resolveVoxelizer(const gpu::Context& ctx, VoxelizerKind kind);
-const char* voxelizerName(VoxelizerKind kind);  // "geometry", "compute", "auto"
+const char* voxelizerName(VoxelizerKind kind);  // "geometry", "compute", "auto", "pv"
 
 class Voxelizer {
 public:
@@ -66,7 +68,7 @@ public:
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
     bool hardwareConservative() const { return hardware_; }
-    VoxelizerKind kind() const { return compute_ ? VoxelizerKind::Compute : VoxelizerKind::Geometry; }
+    VoxelizerKind kind() const { return kind_; }
 
 private:
     void clearListed(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, uint32_t scope) const;
@@ -75,6 +77,7 @@ private:
 
     const gpu::Context& ctx_;
     bool hardware_;
+    VoxelizerKind kind_;
     gpu::Pipeline voxelize_;  // geometry path only
     gpu::Pipeline clear_;
     std::unique_ptr<ComputeVoxelizer> compute_;

@@ -1,0 +1,85 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
+#include "shared/pv_pass.h"
+
+// Progressive voxelization, cleanup (shared/pv_pass.h): last frame's voxels
+// either move into this frame's list with their sums or, where a depth buffer
+// shows empty space in front of its surface, are freed. No atomics on the
+// volumes: every voxel is one list entry, so each invocation owns its voxel,
+// its old slot and the new slot it takes.
+layout(local_size_x = VOXEL_LIST_GROUP) in;
+
+layout(set = 0, binding = BIND_PV_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_PV_ACCUM, r32f) uniform writeonly image3D accum;
+VOXEL_LIST_BLOCK(BIND_PV_LIST, );
+VOXEL_INDEX_BLOCK(BIND_PV_INDEX, );
+layout(set = 0, binding = BIND_PV_RADIANCE, rgba16f) uniform writeonly image3D radiance;
+layout(set = 0, binding = BIND_PV_OLD_ACCUM, r32f) uniform readonly image3D oldAccum;
+layout(set = 0, binding = BIND_PV_OLD_LIST, std430) readonly buffer OldList { VoxelListHeader header; uint entries[]; } oldList;
+layout(set = 0, binding = BIND_PV_VIEWS, std430) readonly buffer Views { PvDepthView views[]; };
+layout(set = 0, binding = BIND_PV_CAMERA_DEPTH) uniform sampler2D cameraDepth;
+layout(set = 0, binding = BIND_PV_SHADOW_DEPTH) uniform sampler2DArray shadowDepth;
+layout(push_constant) uniform Push { PvCleanupPush pc; };
+
+#include "lib/voxel_list_dispatch.glsl"
+#include "lib/voxel_index.glsl"
+
+const uint KEEP = 0u, BAND = 1u, FREE = 2u;
+
+// What one depth view says about a voxel centre c: nothing (outside the
+// view), FREE (the recorded surface lies behind c by more than the
+// tolerance, or the view recorded nothing), BAND (c within the tolerance of
+// the recorded surface) or KEEP (c behind it: hidden, kept as it was).
+uint classify(PvDepthView view, vec3 c) {
+    vec4 clip = view.viewProj * vec4(c, 1.0);
+    if (clip.w <= 0.0) return KEEP;
+    vec3 ndc = clip.xyz / clip.w;
+    if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z < 0.0 || ndc.z > 1.0) return KEEP;
+    bool camera = view.params.x < 0.0;
+    ivec2 size = camera ? ivec2(pc.sizes.yz) : ivec2(pc.sizes.w);
+    ivec2 pixel = clamp(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
+    float recorded = camera ? texelFetch(cameraDepth, pixel, 0).r
+                            : texelFetch(shadowDepth, ivec3(pixel, int(view.params.x)), 0).r;
+    // Cleared depth: nothing along this ray inside the view's range.
+    if (recorded >= 1.0) return FREE;
+    vec4 p = view.invViewProj * vec4(ndc.xy, recorded, 1.0);
+    float gap = distance(p.xyz / p.w, c);
+    float tolerance = pc.weights.z + view.params.y + view.params.z * clip.w;
+    if (gap <= tolerance) return BAND;
+    return recorded > ndc.z ? FREE : KEEP;
+}
+
+void main() {
+    uint i = listInvocation();
+    if (i >= oldList.header.counts.x) return;
+    uint entry = oldList.entries[i];
+    ivec3 v = unpackVoxel(entry);
+    vec3 c = grid.originSize.xyz + (vec3(v) + 0.5) * grid.originSize.w;
+    // The camera's G-buffer is exact and refills what it sees, so its band
+    // wins over a shadow map's (whose slope bias can put a lit surface
+    // behind the voxel that holds it).
+    uint verdict = KEEP;
+    for (uint k = 0u; k < pc.sizes.x; ++k) {
+        uint s = classify(views[k], c);
+        if (s == BAND && views[k].params.x < 0.0) {
+            verdict = BAND;
+            break;
+        }
+        if (s == FREE) verdict = FREE;
+    }
+    if (verdict == FREE) {
+        voxelIndex[voxelIndexOffset(v)] = 0u;
+        imageStore(radiance, v, vec4(0.0));
+        return;
+    }
+    uint slot = atomicAdd(list.header.counts.x, 1u);  // the new list holds at most the old one's entries
+    list.entries[slot] = entry;
+    voxelIndex[voxelIndexOffset(v)] = (slot + 1u) | VOXEL_INDEX_STATIC;
+    float count = imageLoad(oldAccum, slotTexel(i, CH_COUNT)).r;
+    float keep = verdict == BAND ? pc.weights.x : pc.weights.y;
+    float scale = count > keep ? keep / count : 1.0;
+    for (uint ch = 0u; ch < VOXEL_CHANNELS; ++ch)
+        imageStore(accum, slotTexel(slot, ch), vec4(imageLoad(oldAccum, slotTexel(i, ch)).r * scale));
+}
