@@ -28,27 +28,53 @@ layout(push_constant) uniform Push { PvCleanupPush pc; };
 
 const uint KEEP = 0u, BAND = 1u, FREE = 2u;
 
-// What one depth view says about a voxel centre c: nothing (outside the
-// view), FREE (the recorded surface lies behind c by more than the
-// tolerance, or the view recorded nothing), BAND (c within the tolerance of
-// the recorded surface) or KEEP (c behind it: hidden, kept as it was).
+// What one depth view says about the voxel of centre c: nothing (KEEP: the
+// voxel lies outside the view, or some ray through it sees a surface in
+// front of it), FREE (every ray through the voxel saw past it: the recorded
+// surface lies behind it by more than the tolerance, or nothing was
+// recorded), or BAND (a ray's recorded surface lies within the tolerance of
+// the voxel's depth). The chapter tests the centre's ray only, which frees a
+// voxel whose centre lies just outside a silhouette it holds; here nine rays
+// spread over the voxel's projected footprint must all see past it.
 uint classify(PvDepthView view, vec3 c) {
     vec4 clip = view.viewProj * vec4(c, 1.0);
     if (clip.w <= 0.0) return KEEP;
     vec3 ndc = clip.xyz / clip.w;
     if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z < 0.0 || ndc.z > 1.0) return KEEP;
+    float b = pc.weights.z;
+    // The footprint's half-extent in NDC: the largest shift of the centre's
+    // projection along the grid axes, by the tolerance.
+    float r = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        vec4 e = clip + b * view.viewProj[a];
+        if (e.w <= 0.0) return KEEP;
+        vec2 d = abs(e.xy / e.w - ndc.xy);
+        r = max(r, max(d.x, d.y));
+    }
     bool camera = view.params.x < 0.0;
     ivec2 size = camera ? ivec2(pc.sizes.yz) : ivec2(pc.sizes.w);
-    ivec2 pixel = clamp(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
-    float recorded = camera ? texelFetch(cameraDepth, pixel, 0).r
-                            : texelFetch(shadowDepth, ivec3(pixel, int(view.params.x)), 0).r;
-    // Cleared depth: nothing along this ray inside the view's range.
-    if (recorded >= 1.0) return FREE;
-    vec4 p = view.invViewProj * vec4(ndc.xy, recorded, 1.0);
-    float gap = distance(p.xyz / p.w, c);
-    float tolerance = pc.weights.z + view.params.y + view.params.z * clip.w;
-    if (gap <= tolerance) return BAND;
-    return recorded > ndc.z ? FREE : KEEP;
+    float tolerance = b + view.params.y + view.params.z * clip.w;
+    uint freed = 0u;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            vec2 q = ndc.xy + r * vec2(i, j);
+            if (any(greaterThan(abs(q), vec2(1.0)))) continue;  // partly outside: cannot be proven empty
+            ivec2 pixel = clamp(ivec2((q * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
+            float recorded = camera ? texelFetch(cameraDepth, pixel, 0).r
+                                    : texelFetch(shadowDepth, ivec3(pixel, int(view.params.x)), 0).r;
+            // Cleared depth: nothing along this ray inside the view's range.
+            if (recorded >= 1.0) {
+                ++freed;
+                continue;
+            }
+            // Distance along the ray from the voxel centre's depth to the surface.
+            vec4 s = view.invViewProj * vec4(q, recorded, 1.0);
+            vec4 o = view.invViewProj * vec4(q, ndc.z, 1.0);
+            float gap = distance(s.xyz / s.w, o.xyz / o.w);
+            if (gap <= tolerance) return BAND;
+            if (recorded > ndc.z) ++freed;
+        }
+    return freed == 9u ? FREE : KEEP;
 }
 
 void main() {

@@ -32,6 +32,10 @@ int addMaterial(scene::Scene& s, glm::vec3 albedo, glm::vec3 emission = glm::vec
 int addQuad(scene::Scene& s, int material, glm::vec3 center, float halfSize, glm::quat rotation = glm::quat(1, 0, 0, 0));
 void addTopDownCamera(scene::Scene& s, float height, float yfov);
 void addLight(scene::Scene& s, scene::Light light, glm::vec3 position, glm::vec3 direction);
+// A unit sphere of 20 * 4^subdivisions triangles, smooth normals, as one primitive.
+scene::Primitive icosphere(int subdivisions);
+// A node holding `p` with `material`, placed by translation, rotation and scale.
+int addMeshNode(scene::Scene& s, scene::Primitive p, int material, glm::vec3 t, glm::quat r, glm::vec3 scale);
 
 image::ImageRGBA32F render(const scene::Scene& s, const render::RenderSettings& settings);
 

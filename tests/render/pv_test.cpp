@@ -6,6 +6,7 @@
 #include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "gpu/context.h"
 #include "gpu/transfer.h"
@@ -34,37 +35,65 @@ scene::PlacedCamera topDownCamera(float height) {
     return c;
 }
 
-// The cleanup rule of pv_cleanup.comp for one view, on the host.
+// The cleanup rule of pv_cleanup.comp for one view, on the host: nine rays
+// over the voxel's projected footprint.
 enum class Verdict { Keep, Band, Free };
 struct Classified {
     Verdict verdict;
-    bool ambiguous;  // within rounding of a pixel edge or of the tolerance
+    bool ambiguous;  // a ray within rounding of a pixel edge or of the tolerance
 };
 template <class DepthAt>
-Classified classify(const glm::mat4& viewProj, glm::ivec2 size, DepthAt depthAt, glm::vec3 c, float tolerance) {
+Classified classify(const glm::mat4& viewProj, glm::ivec2 size, DepthAt depthAt, glm::vec3 c, float halfDiagonal,
+                    float tolerance) {
     const glm::vec4 clip = viewProj * glm::vec4(c, 1.0f);
     if (clip.w <= 0.0f) return {Verdict::Keep, false};
     const glm::vec3 ndc = glm::vec3(clip) / clip.w;
     if (std::abs(ndc.x) > 1.0f || std::abs(ndc.y) > 1.0f || ndc.z < 0.0f || ndc.z > 1.0f) return {Verdict::Keep, false};
-    const glm::vec2 at = (glm::vec2(ndc) * 0.5f + 0.5f) * glm::vec2(size);
-    const bool nearEdge = std::abs(at.x - std::round(at.x)) < 1e-3f || std::abs(at.y - std::round(at.y)) < 1e-3f;
-    const glm::ivec2 pixel = glm::clamp(glm::ivec2(at), glm::ivec2(0), size - 1);
-    const float recorded = depthAt(pixel);
-    if (recorded >= 1.0f) return {Verdict::Free, nearEdge};
-    const glm::vec4 p = glm::inverse(viewProj) * glm::vec4(glm::vec2(ndc), recorded, 1.0f);
-    const float gap = glm::distance(glm::vec3(p) / p.w, c);
-    const bool nearTolerance = std::abs(gap - tolerance) < 1e-4f;
-    if (gap <= tolerance) return {Verdict::Band, nearEdge || nearTolerance};
-    return {recorded > ndc.z ? Verdict::Free : Verdict::Keep, nearEdge || nearTolerance};
+    float r = 0.0f;
+    for (int a = 0; a < 3; ++a) {
+        const glm::vec4 e = clip + halfDiagonal * viewProj[a];
+        const glm::vec2 d = glm::abs(glm::vec2(e) / e.w - glm::vec2(ndc));
+        r = std::max(r, std::max(d.x, d.y));
+    }
+    const glm::mat4 inv = glm::inverse(viewProj);
+    bool ambiguous = false;
+    int freed = 0;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            const glm::vec2 q = glm::vec2(ndc) + r * glm::vec2(i, j);
+            if (std::abs(q.x) > 1.0f || std::abs(q.y) > 1.0f) continue;
+            const glm::vec2 at = (q * 0.5f + 0.5f) * glm::vec2(size);
+            const glm::ivec2 pixel = glm::clamp(glm::ivec2(at), glm::ivec2(0), size - 1);
+            const float recorded = depthAt(pixel);
+            // Rounding may put the GPU's ray in a neighbouring pixel: only a
+            // problem where that pixel records another depth.
+            for (const glm::vec2 nudge : {glm::vec2(-1e-3f, 0), glm::vec2(1e-3f, 0), glm::vec2(0, -1e-3f), glm::vec2(0, 1e-3f)})
+                ambiguous |= depthAt(glm::clamp(glm::ivec2(at + nudge), glm::ivec2(0), size - 1)) != recorded;
+            if (recorded >= 1.0f) {
+                ++freed;
+                continue;
+            }
+            const glm::vec4 s = inv * glm::vec4(q, recorded, 1.0f);
+            const glm::vec4 o = inv * glm::vec4(q, ndc.z, 1.0f);
+            const float gap = glm::distance(glm::vec3(s) / s.w, glm::vec3(o) / o.w);
+            ambiguous |= std::abs(gap - tolerance) < 1e-4f;
+            if (gap <= tolerance) return {Verdict::Band, ambiguous};
+            if (recorded > ndc.z) ++freed;
+        }
+    return {freed == 9 ? Verdict::Free : Verdict::Keep, ambiguous};
 }
 
-class PvCleanup : public GpuTest {};
+class PvCleanup : public GpuTest, public ::testing::WithParamInterface<bool> {};
 
-// A synthetic camera depth buffer over a grid full of voxel columns: a floor at
+// A synthetic depth buffer over a grid full of voxel columns: a floor at
 // y = 0 on the left third of the image, nothing in the middle, a shelf at
 // y = 0.5 on the right. Each voxel must be freed, kept or kept with its sums
-// reduced to one fragment's worth (the band) exactly as the rule says.
-TEST_F(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
+// reduced to one fragment's worth (the camera's band) exactly as the rule
+// says. Parameter: the buffer is the camera's (perspective, from above) or
+// layer 1 of the shadow maps (orthographic, with a tolerance of its own; a
+// shadow map's band keeps sums as they are).
+TEST_P(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
+    const bool shadow = GetParam();
     gpu::Context& ctx = context();
     const vxgi::GridSpec grid = vxgi::gridForBox(glm::vec3(-1.0f), glm::vec3(1.0f), kN);
     vxgi::VoxelVolumes volumes(ctx, grid);
@@ -85,7 +114,10 @@ TEST_F(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
 
     const glm::ivec2 size(64, 64);
     const scene::PlacedCamera camera = topDownCamera(2.0f);
-    const glm::mat4 viewProj = render::projectionMatrix(camera, size.x, size.y) * render::viewMatrix(camera);
+    const glm::mat4 viewProj =
+        shadow ? glm::ortho(-1.1f, 1.1f, -1.1f, 1.1f, 0.5f, 4.0f) * render::viewMatrix(camera)
+               : render::projectionMatrix(camera, size.x, size.y) * render::viewMatrix(camera);
+    const float shadowTolerance = shadow ? 0.01f : 0.0f;
     auto planeDepth = [&](float y) {
         const glm::vec4 clip = viewProj * glm::vec4(0.0f, y, 0.0f, 1.0f);
         return clip.z / clip.w;
@@ -96,20 +128,25 @@ TEST_F(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
     for (int y = 0; y < size.y; ++y)
         for (int x = 0; x < size.x; ++x) depth[size_t(y) * size.x + x] = depthAt({x, y});
 
+    // The other buffer records nothing and is not among the views.
+    const std::vector<float> nothing(depth.size(), 1.0f);
+    std::vector<float> layers = nothing;
+    layers.insert(layers.end(), depth.begin(), depth.end());
     gpu::ImageDesc d;
     d.format = VK_FORMAT_D32_SFLOAT;
     d.extent = {uint32_t(size.x), uint32_t(size.y), 1};
     d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    d.name = "synthetic camera depth";
+    d.name = "camera depth";
     gpu::Image cameraDepth(ctx, d);
-    gpu::uploadImage(ctx, cameraDepth, depth.data(), depth.size() * sizeof(float), gpu::use::DepthRead);
-    d.extent = {4, 4, 1};
+    gpu::uploadImage(ctx, cameraDepth, shadow ? nothing.data() : depth.data(), depth.size() * sizeof(float),
+                     gpu::use::DepthRead);
     d.layers = 2;
-    d.name = "unused shadow maps";
+    d.name = "shadow maps";
     gpu::Image shadowMaps(ctx, d);
-    std::vector<float> far(32, 1.0f);
-    gpu::uploadImage(ctx, shadowMaps, far.data(), far.size() * sizeof(float), gpu::use::ShaderRead);
-    const sh::PvDepthView view{viewProj, glm::inverse(viewProj), glm::vec4(sh::PV_CAMERA_LAYER, 0, 0, 0)};
+    gpu::uploadImage(ctx, shadowMaps, shadow ? layers.data() : std::vector<float>(2 * depth.size(), 1.0f).data(),
+                     2 * depth.size() * sizeof(float), gpu::use::ShaderRead);
+    const sh::PvDepthView view{viewProj, glm::inverse(viewProj),
+                               glm::vec4(shadow ? 1.0f : sh::PV_CAMERA_LAYER, shadowTolerance, 0, 0)};
     gpu::Buffer views = gpu::createBuffer(ctx, &view, sizeof(view), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "views");
     gpu::SamplerDesc sd;
     sd.filter = VK_FILTER_NEAREST;
@@ -126,14 +163,15 @@ TEST_F(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
     });
     const vxgi::DenseAttributes after = vxgi::readAttributes(ctx, volumes);
 
-    const float tolerance = 0.5f * std::sqrt(3.0f) * grid.voxelSize;
+    const float halfDiagonal = 0.5f * std::sqrt(3.0f) * grid.voxelSize;
     std::map<Verdict, int> seen;
     int ambiguous = 0;
     for (int z = 0; z < int(kN); z += 2)
         for (int x = 0; x < int(kN); x += 2)
             for (int y = 0; y < int(kN); ++y) {
                 const glm::vec3 c(layerCentre(x), layerCentre(y), layerCentre(z));
-                const Classified k = classify(viewProj, size, depthAt, c, tolerance);
+                Classified k = classify(viewProj, size, depthAt, c, halfDiagonal, halfDiagonal + shadowTolerance);
+                if (shadow && k.verdict == Verdict::Band) k.verdict = Verdict::Keep;
                 if (k.ambiguous) {
                     ++ambiguous;
                     continue;
@@ -153,7 +191,7 @@ TEST_F(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
     std::printf("  kept %d, in the band %d, freed %d, skipped as ambiguous %d\n", seen[Verdict::Keep],
                 seen[Verdict::Band], seen[Verdict::Free], ambiguous);
     EXPECT_GT(seen[Verdict::Keep], 100);
-    EXPECT_GT(seen[Verdict::Band], 20);
+    if (!shadow) EXPECT_GT(seen[Verdict::Band], 20);
     EXPECT_GT(seen[Verdict::Free], 100);
     EXPECT_LT(ambiguous, 10);
     // Nothing appeared where nothing was.
@@ -162,6 +200,9 @@ TEST_F(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
             for (int y = 0; y < int(kN); ++y)
                 if (x % 2 || z % 2) ASSERT_EQ(after.at(x, y, z, sh::CH_COUNT), 0.0f);
 }
+
+INSTANTIATE_TEST_SUITE_P(DepthViews, PvCleanup, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "ShadowMap" : "Camera"; });
 
 render::RenderSettings pvSettings(vxgi::VoxelizerKind kind) {
     render::RenderSettings rs;
@@ -251,6 +292,78 @@ TEST_F(PvVoxelize, MovedObjectLeavesNoStaleVoxelsOnceTheSpaceItLeftIsSeen) {
     EXPECT_EQ(layerVoxels(16, false), 30 * 15) << "the floor under the block's new place, seen before, is kept";
     for (int layer = 0; layer < int(kN); ++layer)
         if (layer != 16 && layer != 21) EXPECT_EQ(layerVoxels(layer, true) + layerVoxels(layer, false), 0);
+}
+
+// The chapter's convergence: the camera orbits a sphere once around Y and
+// once around X; every voxel the exact geometric voxelizer marks should then
+// be found, and nothing far from the surface.
+TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
+    scene::Scene s;
+    addMeshNode(s, icosphere(3), addMaterial(s, glm::vec3(0.7f)), glm::vec3(0.03f, -0.02f, 0.01f),
+                glm::quat(1, 0, 0, 0), glm::vec3(0.55f));
+    addTopDownCamera(s, 2.5f, glm::radians(60.0f));
+    scene::CameraPath path;
+    path.catmullRom = false;
+    constexpr int kSteps = 8;  // per orbit
+    for (int axis = 0; axis < 2; ++axis)
+        for (int k = 0; k < kSteps; ++k) {
+            const float a = 2.0f * glm::pi<float>() * float(k) / kSteps;
+            // Around Y in the xz plane, then around X in the yz plane (up = +X there).
+            const glm::vec3 dir = axis == 0 ? glm::vec3(std::sin(a), 0.0f, std::cos(a))
+                                            : glm::vec3(0.0f, std::sin(a), std::cos(a));
+            const glm::vec3 up = axis == 0 ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+            scene::CameraKey key;
+            key.time = float(axis * kSteps + k);
+            key.position = 2.5f * dir;
+            key.orientation = glm::quatLookAt(-dir, up);
+            path.keys.push_back(key);
+        }
+    render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
+    rs.width = rs.height = 256;  // about 5.6 pixels per voxel across the sphere
+    render::Renderer pv(context(), s, rs);
+    pv.setCameraPath(path);
+    render::Renderer exact(context(), s, pvSettings(vxgi::VoxelizerKind::Compute));
+    exact.renderFrame();
+    // The sphere stays put, so no voxel found once may be freed later.
+    const std::vector<float> b = channel(vxgi::readAttributes(context(), *exact.volumes()), sh::CH_COUNT);
+    std::vector<float> everFound(b.size(), 0.0f);
+    for (const scene::CameraKey& key : path.keys) {
+        pv.setTime(key.time);
+        pv.renderFrame();
+        const std::vector<float> c = channel(vxgi::readAttributes(context(), *pv.volumes()), sh::CH_COUNT);
+        size_t lost = 0;
+        for (size_t i = 0; i < c.size(); ++i) {
+            lost += everFound[i] > 0.0f && c[i] == 0.0f;
+            if (c[i] > 0.0f) everFound[i] = 1.0f;
+        }
+        EXPECT_EQ(lost, 0u) << "voxels found earlier were freed at time " << key.time;
+    }
+    const std::vector<float> a = channel(vxgi::readAttributes(context(), *pv.volumes()), sh::CH_COUNT);
+    auto at = [](const std::vector<float>& c, int x, int y, int z) {
+        if (x < 0 || y < 0 || z < 0 || x >= int(kN) || y >= int(kN) || z >= int(kN)) return 0.0f;
+        return c[(size_t(z) * kN + y) * kN + x];
+    };
+    size_t geometric = 0, found = 0, pvVoxels = 0, far = 0;
+    for (int z = 0; z < int(kN); ++z)
+        for (int y = 0; y < int(kN); ++y)
+            for (int x = 0; x < int(kN); ++x) {
+                if (at(b, x, y, z) > 0.0f) {
+                    ++geometric;
+                    found += at(a, x, y, z) > 0.0f;
+                }
+                if (at(a, x, y, z) == 0.0f) continue;
+                ++pvVoxels;
+                bool near = false;
+                for (int k = 0; k < 27 && !near; ++k) near = at(b, x + k % 3 - 1, y + k / 3 % 3 - 1, z + k / 9 - 1) > 0.0f;
+                far += !near;
+            }
+    std::printf("  geometric voxels %zu, found by pv %zu (%.2f %%); pv voxels %zu, farther than one voxel %zu\n",
+                geometric, found, 100.0 * double(found) / double(geometric), pvVoxels, far);
+    // Measured 98.42 % (96.36 % at 128^2, 92.45 % before the cell-corner
+    // splats): the voxels missed are those the surface only clips, which
+    // no cell footprint corner lands in (docs/pv.md). Issue #12's goal is 99 %.
+    EXPECT_GE(double(found), 0.98 * double(geometric));
+    EXPECT_EQ(far, 0u);
 }
 
 }  // namespace

@@ -33,42 +33,7 @@ TEST_P(SceneCoverage, CornellBox64) {
     expectCoverage(runCoverage(s, {grid}, "Cornell box, N=64", GetParam()), GetParam());
 }
 
-// Smooth-shaded meshes as one primitive each.
-scene::Primitive icosphere(int subdivisions) {
-    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-    std::vector<glm::dvec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                 {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    std::vector<glm::uvec3> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                                 {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (glm::dvec3& p : v) p = glm::normalize(p);
-    for (int s = 0; s < subdivisions; ++s) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            const auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            v.push_back(glm::normalize(v[a] + v[b]));
-            return mid[key] = uint32_t(v.size() - 1);
-        };
-        std::vector<glm::uvec3> next;
-        for (const glm::uvec3& tri : f) {
-            const uint32_t a = midpoint(tri.x, tri.y), b = midpoint(tri.y, tri.z), c = midpoint(tri.z, tri.x);
-            next.insert(next.end(), {{tri.x, a, c}, {tri.y, b, a}, {tri.z, c, b}, {a, b, c}});
-        }
-        f = next;
-    }
-    scene::Primitive p;
-    for (const glm::dvec3& q : v) {
-        scene::Vertex vert;
-        vert.position = glm::vec3(q);
-        vert.normal = glm::vec3(q);
-        p.vertices.push_back(vert);
-    }
-    for (const glm::uvec3& tri : f) p.indices.insert(p.indices.end(), {tri.x, tri.y, tri.z});
-    return p;
-}
-
+// Smooth-shaded meshes as one primitive each (icosphere: gpu_fixture.h).
 scene::Primitive torus(double major, double minor, uint32_t segments, uint32_t sides) {
     scene::Primitive p;
     for (uint32_t i = 0; i < segments; ++i)
@@ -88,20 +53,6 @@ scene::Primitive torus(double major, double minor, uint32_t segments, uint32_t s
             p.indices.insert(p.indices.end(), {a, b, c, a, c, d});
         }
     return p;
-}
-
-int addMeshNode(scene::Scene& s, scene::Primitive p, int material, glm::vec3 t, glm::quat r, glm::vec3 scale) {
-    p.material = uint32_t(material);
-    s.primitives.push_back(std::move(p));
-    s.meshes.push_back(scene::Mesh{"mesh", {uint32_t(s.primitives.size() - 1)}});
-    scene::Node n;
-    n.mesh = int(s.meshes.size() - 1);
-    n.translation = t;
-    n.rotation = r;
-    n.scale = scale;
-    s.nodes.push_back(n);
-    s.roots.push_back(int(s.nodes.size() - 1));
-    return int(s.nodes.size() - 1);
 }
 
 TEST_P(SceneCoverage, IcosphereAndTorus32) {
