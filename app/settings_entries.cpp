@@ -255,6 +255,12 @@ std::vector<Setting> imageAndVoxels() {
                       kAll, kFrame},
                      0, 16384, FIELD(settings.pv.grid)),
              "256"),
+        with(integer({"pv-rsm", kVoxels, "S", "texels",
+                      "--voxelizer pv: reflective shadow maps of S x S texels, one per shadow view, injected like "
+                      "the camera's G-buffer so that lit surfaces the camera has not seen are voxelized; 0 = off",
+                      kAll, kNew},
+                     0, 8192, FIELD(settings.pv.rsm)),
+             "128"),
         with(choice({"view", kVoxels, "MODE", "",
                      "final, or voxels:albedo|normal|emission|radiance|directional: draw that voxel volume as cubes "
                      "from the camera instead",

@@ -33,17 +33,23 @@ uint64_t TemporalHistory::memoryBytes() const {
 uint32_t FrameSize::traceWidth() const { return std::max(1u, uint32_t(std::lround(internalWidth() * traceScale))); }
 uint32_t FrameSize::traceHeight() const { return std::max(1u, uint32_t(std::lround(internalHeight() * traceScale))); }
 
-FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
-    const uint32_t iw = s.internalWidth(), ih = s.internalHeight();
+GBuffer createGBuffer(const gpu::Context& ctx, uint32_t width, uint32_t height, bool light) {
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     const VkImageUsageFlags color = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read;
+    GBuffer g;
+    g.base = image2D(ctx, GBuffer::kColorFormat, width, height, color, light ? "rsm base colour" : "gbuffer base colour");
+    g.normal = image2D(ctx, GBuffer::kColorFormat, width, height, color, light ? "rsm normal" : "gbuffer normal");
+    g.emission = image2D(ctx, GBuffer::kColorFormat, width, height, color, light ? "rsm emission" : "gbuffer emission");
+    g.depth = image2D(ctx, GBuffer::kDepthFormat, width, height, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read,
+                      light ? "rsm depth" : "gbuffer depth");
+    return g;
+}
+
+FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
+    const uint32_t iw = s.internalWidth(), ih = s.internalHeight();
     const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     FrameTargets t;
-    t.gbuffer.base = image2D(ctx, GBuffer::kColorFormat, iw, ih, color, "gbuffer base colour");
-    t.gbuffer.normal = image2D(ctx, GBuffer::kColorFormat, iw, ih, color, "gbuffer normal");
-    t.gbuffer.emission = image2D(ctx, GBuffer::kColorFormat, iw, ih, color, "gbuffer emission");
-    t.gbuffer.depth = image2D(ctx, GBuffer::kDepthFormat, iw, ih, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read,
-                              "gbuffer depth");
+    t.gbuffer = createGBuffer(ctx, iw, ih);
     t.shadowMap = image2D(ctx, VK_FORMAT_D32_SFLOAT, s.shadowMapSize, s.shadowMapSize,
                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "shadow map array",
                           std::max(s.shadowViews, 2u));

@@ -56,6 +56,9 @@ struct FrameTargets {
 };
 
 FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& size);
+// A G-buffer of width x height; light = a light's view (a reflective shadow
+// map for --voxelizer pv), which only changes the images' names.
+GBuffer createGBuffer(const gpu::Context& ctx, uint32_t width, uint32_t height, bool light = false);
 
 // Samplers the passes share (immutable, so owned next to the frame).
 struct Samplers {

@@ -235,6 +235,32 @@ void Renderer::uploadPvViews() {
                                                  gpu::MemoryUse::Device, "pv depth views");
     gpu::uploadBuffer(ctx_, *pvViews_, views.data(), bytes);
     pvViewCount_ = uint32_t(views.size());
+
+    // The lights' G-buffers: only the matrices and the size matter to the
+    // G-buffer pass and the injection.
+    const uint32_t rsm = settings_.voxels > 0 ? settings_.pv.rsm : 0;
+    const size_t count = rsm ? shadowViewProj_.size() : 0;
+    if (rsm_.size() != count) {
+        rsm_.clear();
+        rsmFrames_.clear();
+        for (size_t i = 0; i < count; ++i) {
+            rsm_.push_back(createGBuffer(ctx_, rsm, rsm, true));
+            rsmFrames_.push_back(std::make_unique<gpu::Buffer>(
+                ctx_, sizeof(sh::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                gpu::MemoryUse::Device, "rsm frame constants"));
+        }
+    }
+    // Shadow views keep glm's clip space; the camera's flips y (so row 0 is the
+    // top of the image), and the G-buffer's facing test, which turns normals
+    // toward the viewer, follows the winding: flip the lights' views too.
+    const glm::mat4 flipY = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f));
+    for (size_t i = 0; i < count; ++i) {
+        sh::FrameConstants f{};
+        f.viewProj = flipY * shadowViewProj_[i];
+        f.invViewProj = glm::inverse(f.viewProj);
+        f.sizes = glm::uvec4(rsm, rsm, 0u, 0u);
+        gpu::uploadBuffer(ctx_, *rsmFrames_[i], &f, sizeof(f));
+    }
 }
 
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
@@ -301,11 +327,27 @@ void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
     FrameTargets& f = *targets_;
     shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, f.shadowMap, t);
     gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
+    if (!rsm_.empty()) {
+        gpu::GpuTimerScope scope(t, cmd, "pv rsm");
+        for (size_t i = 0; i < rsm_.size(); ++i)
+            gbuffer_->record(cmd, tracker_, *sceneGpu_, *rsmFrames_[i], rsm_[i], nullptr);
+    }
     const vxgi::PvDepthInputs depth{f.gbuffer.depth, f.shadowMap, *pvViews_, pvViewCount_, samplers_->point.handle()};
     pv_->cleanup(cmd, tracker_, *volumes_, depth, t);
     const vxgi::PvGBufferInputs g{f.gbuffer.depth, f.gbuffer.base,   f.gbuffer.normal,
                                   f.gbuffer.emission, *frame_, samplers_->point.handle()};
     pv_->inject(cmd, tracker_, *volumes_, g, settings_.pv, t);
+    if (!rsm_.empty()) {
+        gpu::GpuTimerScope scope(t, cmd, "pv inject rsm");
+        vxgi::PvSettings everyTexel = settings_.pv;
+        everyTexel.grid = 0;
+        for (size_t i = 0; i < rsm_.size(); ++i) {
+            const GBuffer& r = rsm_[i];
+            const vxgi::PvGBufferInputs light{r.depth, r.base, r.normal, r.emission, *rsmFrames_[i],
+                                              samplers_->point.handle()};
+            pv_->inject(cmd, tracker_, *volumes_, light, everyTexel, nullptr);
+        }
+    }
     list_->finish(cmd, tracker_, *volumes_, true);
     list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
 }
@@ -484,7 +526,8 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
     return a.width != b.width || a.height != b.height || a.supersample != b.supersample ||
            a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels || a.voxelSlots != b.voxelSlots ||
            a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
-           a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.gather.traceScale != b.gather.traceScale ||
+           a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.pv.rsm != b.pv.rsm ||
+           a.gather.traceScale != b.gather.traceScale ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
 }

@@ -190,6 +190,10 @@ private:
     uint32_t pvViewCount_ = 0;
     std::vector<glm::mat4> shadowViewProj_;  // the uploaded shadow views' matrices
     std::vector<glm::vec4> shadowViewParams_;
+    // Reflective shadow maps: a G-buffer per shadow view (settings.pv.rsm),
+    // rendered with that view's FrameConstants.
+    std::vector<GBuffer> rsm_;
+    std::vector<std::unique_ptr<gpu::Buffer>> rsmFrames_;
     std::unique_ptr<VoxelViewPass> voxelView_;
     std::unique_ptr<vxgi::VoxelListPass> list_;
     std::unique_ptr<vxgi::InjectPass> inject_;

@@ -52,6 +52,9 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
         if (pv_) items.push_back({"pv last frame's attributes and list", pv_->memoryBytes()});
+        uint64_t rsm = 0;
+        for (const GBuffer& g : rsm_) rsm += g.memoryBytes();
+        if (rsm) items.push_back({"pv reflective shadow maps", rsm});
     }
     return items;
 }

@@ -27,6 +27,10 @@ struct PvSettings {
     // Injection grid: samples along the G-buffer's longer side (the other side
     // in proportion); 0 = every pixel.
     uint32_t grid = 0;
+    // Reflective shadow maps: each shadow view also renders a G-buffer of
+    // rsm x rsm texels from the light, injected like the camera's, so that
+    // lit surfaces the camera has not seen are voxelized too; 0 = off.
+    uint32_t rsm = 256;
 };
 
 // The depth buffers that can prove voxels empty. `views` holds

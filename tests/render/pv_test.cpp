@@ -191,14 +191,18 @@ TEST_P(PvCleanup, FreesKeepsAndUpdatesVoxelsAsTheRuleSays) {
     std::printf("  kept %d, in the band %d, freed %d, skipped as ambiguous %d\n", seen[Verdict::Keep],
                 seen[Verdict::Band], seen[Verdict::Free], ambiguous);
     EXPECT_GT(seen[Verdict::Keep], 100);
-    if (!shadow) EXPECT_GT(seen[Verdict::Band], 20);
+    if (!shadow) {
+        EXPECT_GT(seen[Verdict::Band], 20);
+    }
     EXPECT_GT(seen[Verdict::Free], 100);
     EXPECT_LT(ambiguous, 10);
     // Nothing appeared where nothing was.
     for (int z = 0; z < int(kN); ++z)
         for (int x = 0; x < int(kN); ++x)
             for (int y = 0; y < int(kN); ++y)
-                if (x % 2 || z % 2) ASSERT_EQ(after.at(x, y, z, sh::CH_COUNT), 0.0f);
+                if (x % 2 || z % 2) {
+                    ASSERT_EQ(after.at(x, y, z, sh::CH_COUNT), 0.0f);
+                }
 }
 
 INSTANTIATE_TEST_SUITE_P(DepthViews, PvCleanup, ::testing::Bool(),
@@ -291,7 +295,9 @@ TEST_F(PvVoxelize, MovedObjectLeavesNoStaleVoxelsOnceTheSpaceItLeftIsSeen) {
     EXPECT_EQ(layerVoxels(16, true), 30 * 15) << "the floor where the block was should be found";
     EXPECT_EQ(layerVoxels(16, false), 30 * 15) << "the floor under the block's new place, seen before, is kept";
     for (int layer = 0; layer < int(kN); ++layer)
-        if (layer != 16 && layer != 21) EXPECT_EQ(layerVoxels(layer, true) + layerVoxels(layer, false), 0);
+        if (layer != 16 && layer != 21) {
+            EXPECT_EQ(layerVoxels(layer, true) + layerVoxels(layer, false), 0);
+        }
 }
 
 // The chapter's convergence: the camera orbits a sphere once around Y and
@@ -365,6 +371,53 @@ TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
     EXPECT_GE(double(found), 0.98 * double(geometric));
     EXPECT_EQ(far, 0u);
 }
+
+class PvLights : public GpuTest, public ::testing::WithParamInterface<scene::LightType> {};
+
+// A floor that only a light sees (the camera looks up into empty space): the
+// light's reflective shadow map voxelizes it as the exact voxelizer does, with
+// the normal facing the light.
+TEST_P(PvLights, ReflectiveShadowMapsVoxelizeWhatOnlyALightSees) {
+    scene::Scene s;
+    addQuad(s, addMaterial(s, glm::vec3(0.6f, 0.5f, 0.4f)), glm::vec3(0.0f, layerCentre(16), 0.0f), 6.5f / 16.0f);
+    addTopDownCamera(s, 0.5f, glm::radians(60.0f));
+    s.nodes.back().rotation = glm::angleAxis(glm::half_pi<float>(), glm::vec3(1, 0, 0));  // looks up
+    scene::Light light;
+    light.name = "light";
+    light.type = GetParam();
+    light.outerConeAngle = 1.2f;
+    addLight(s, light, glm::vec3(0.1f, 0.7f, -0.05f), glm::vec3(0.3f, -1.0f, 0.2f));
+    render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
+    rs.pv.rsm = 128;
+    render::Renderer pv(context(), s, rs);
+    pv.renderFrame();
+    render::Renderer exact(context(), s, pvSettings(vxgi::VoxelizerKind::Compute));
+    exact.renderFrame();
+    const vxgi::DenseAttributes a = vxgi::readAttributes(context(), *pv.volumes());
+    const vxgi::DenseAttributes b = vxgi::readAttributes(context(), *exact.volumes());
+    const std::vector<float> countA = channel(a, sh::CH_COUNT), countB = channel(b, sh::CH_COUNT);
+    size_t occupied = 0, missed = 0, extra = 0, wrongNormal = 0;
+    for (size_t i = 0; i < countA.size(); ++i) {
+        occupied += countB[i] > 0.0f;
+        missed += countB[i] > 0.0f && countA[i] == 0.0f;
+        extra += countA[i] > 0.0f && countB[i] == 0.0f;
+        if (countA[i] > 0.0f) wrongNormal += a.data[sh::CH_NORMAL_POS_Y * countA.size() + i] / countA[i] < 0.999f;
+    }
+    std::printf("  geometric voxels %zu, missed by pv %zu, extra in pv %zu, normals not +Y %zu\n", occupied, missed,
+                extra, wrongNormal);
+    EXPECT_EQ(occupied, 14u * 14u);
+    EXPECT_EQ(missed, 0u);
+    EXPECT_EQ(extra, 0u);
+    EXPECT_EQ(wrongNormal, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(LightTypes, PvLights,
+                         ::testing::Values(scene::LightType::Directional, scene::LightType::Point, scene::LightType::Spot),
+                         [](const ::testing::TestParamInfo<scene::LightType>& info) {
+                             return std::string(info.param == scene::LightType::Directional ? "Directional"
+                                                : info.param == scene::LightType::Point    ? "Point"
+                                                                                           : "Spot");
+                         });
 
 }  // namespace
 }  // namespace dvsgi::test
