@@ -262,17 +262,19 @@ std::vector<Setting> imageAndVoxels() {
                      0, 8192, FIELD(settings.pv.rsm)),
              "128"),
         with(choice({"view", kVoxels, "MODE", "",
-                     "final, or voxels:albedo|normal|emission|radiance|directional: draw that voxel volume as cubes "
-                     "from the camera instead",
+                     "final, or voxels:albedo|normal|emission|radiance|directional|age: draw that voxel volume as "
+                     "cubes from the camera instead (age: found this frame in orange, kept from earlier frames in "
+                     "blue; with the geometric voxelizers, dynamic and static)",
                      kAll, kFrame},
                     {{"final", ViewMode::Final},
                      {"voxels:albedo", ViewMode::VoxelAlbedo},
                      {"voxels:normal", ViewMode::VoxelNormal},
                      {"voxels:emission", ViewMode::VoxelEmission},
                      {"voxels:radiance", ViewMode::VoxelRadiance},
-                     {"voxels:directional", ViewMode::VoxelDirectional}},
+                     {"voxels:directional", ViewMode::VoxelDirectional},
+                     {"voxels:age", ViewMode::VoxelAge}},
                     FIELD(settings.view.mode)),
-             "voxels:normal", "final or voxels:albedo|normal|emission|radiance|directional"),
+             "voxels:normal", "final or voxels:albedo|normal|emission|radiance|directional|age"),
         with(integer({"view-mip", kVoxels, "M", "", "mip level for --view voxels:directional", kAll, kFrame}, 0, 16,
                      FIELD(settings.view.mip)),
              "1"),

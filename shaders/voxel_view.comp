@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
 #include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
 #include "shared/voxel_view_pass.h"
 
 // Voxel debug view: marches each camera ray through the chosen grid (DDA,
@@ -16,6 +17,7 @@ layout(set = 0, binding = BIND_VIEW_RADIANCE, rgba16f) uniform readonly image3D 
 layout(set = 0, binding = BIND_VIEW_DIRECTIONAL, rgba16f) uniform readonly image3D directional;
 layout(set = 0, binding = BIND_VIEW_OUT, rgba32f) uniform writeonly image2D outImage;
 VOXEL_INDEX_BLOCK(BIND_VIEW_INDEX, readonly);
+VOXEL_LIST_BLOCK(BIND_VIEW_LIST, readonly);
 layout(push_constant) uniform Push { VoxelViewPush pc; };
 
 #include "lib/voxel_attributes.glsl"
@@ -35,6 +37,7 @@ vec3 value(ivec3 v, uint mode, int size) {
     if (mode == VIEW_NORMAL) return voxelNormal(slot) * 0.5 + 0.5;
     if (mode == VIEW_EMISSION) return voxelEmission(slot);
     if (mode == VIEW_RADIANCE) return imageLoad(radiance, v).rgb;
+    if (mode == VIEW_AGE) return slot < list.header.counts.y ? vec3(0.30, 0.45, 0.80) : vec3(1.0, 0.55, 0.10);
     return directionalAt(v, size).rgb;
 }
 

@@ -13,6 +13,10 @@ DVSGI_CONST(uint, VIEW_NORMAL, 1);
 DVSGI_CONST(uint, VIEW_EMISSION, 2);
 DVSGI_CONST(uint, VIEW_RADIANCE, 3);
 DVSGI_CONST(uint, VIEW_DIRECTIONAL, 4);
+// Where a voxel's slot lies in the list: after the first counts.y entries
+// (found this frame: progressive voxels new this frame, or dynamic voxels) or
+// among them (kept: from earlier frames, or static).
+DVSGI_CONST(uint, VIEW_AGE, 5);
 
 struct VoxelViewPush {
     uvec4 mode;       // x VIEW_*, y mip level (directional), z output width, w output height
@@ -27,6 +31,7 @@ DVSGI_CONST(uint, BIND_VIEW_RADIANCE, 3);
 DVSGI_CONST(uint, BIND_VIEW_DIRECTIONAL, 4);  // the directional volumes' atlas at the chosen mip
 DVSGI_CONST(uint, BIND_VIEW_OUT, 5);
 DVSGI_CONST(uint, BIND_VIEW_INDEX, 6);
+DVSGI_CONST(uint, BIND_VIEW_LIST, 7);  // the occupied-voxel list (VIEW_AGE reads its header)
 
 DVSGI_CONST(uint, VIEW_GROUP, 8);
 

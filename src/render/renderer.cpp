@@ -334,6 +334,7 @@ void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
     }
     const vxgi::PvDepthInputs depth{f.gbuffer.depth, f.shadowMap, *pvViews_, pvViewCount_, samplers_->point.handle()};
     pv_->cleanup(cmd, tracker_, *volumes_, depth, t);
+    list_->finish(cmd, tracker_, *volumes_, true);  // the survivors count as "kept" (static)
     const vxgi::PvGBufferInputs g{f.gbuffer.depth, f.gbuffer.base,   f.gbuffer.normal,
                                   f.gbuffer.emission, *frame_, samplers_->point.handle()};
     pv_->inject(cmd, tracker_, *volumes_, g, settings_.pv, t);
@@ -348,7 +349,7 @@ void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
             pv_->inject(cmd, tracker_, *volumes_, light, everyTexel, nullptr);
         }
     }
-    list_->finish(cmd, tracker_, *volumes_, true);
+    list_->finish(cmd, tracker_, *volumes_, false);  // this frame's new voxels come after them
     list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
 }
 

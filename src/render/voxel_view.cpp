@@ -25,6 +25,7 @@ uint32_t shaderMode(ViewMode m) {
         case ViewMode::VoxelEmission: return sh::VIEW_EMISSION;
         case ViewMode::VoxelRadiance: return sh::VIEW_RADIANCE;
         case ViewMode::VoxelDirectional: return sh::VIEW_DIRECTIONAL;
+        case ViewMode::VoxelAge: return sh::VIEW_AGE;
         default: return sh::VIEW_ALBEDO;
     }
 }
@@ -40,7 +41,8 @@ VoxelViewPass::VoxelViewPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_VIEW_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VIEW_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_VIEW_DIRECTIONAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_VIEW_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_VIEW_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_VIEW_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelViewPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxel view");
@@ -51,7 +53,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
                            gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel view");
     tracker.image(v.accum, gpu::use::ComputeRead).buffer(v.index, gpu::use::BufferComputeRead).image(v.radiance, gpu::use::ComputeRead);
-    tracker.image(v.directional, gpu::use::ComputeRead);
+    tracker.image(v.directional, gpu::use::ComputeRead).buffer(v.list, gpu::use::BufferComputeRead);
     tracker.image(output, gpu::use::ComputeWrite, true).flush(cmd);
     const uint32_t mip = std::min(view.mip, v.directionalMips - 1);
     const uint32_t w = output.desc().extent.width, h = output.desc().extent.height;
@@ -64,6 +66,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
         .storageImage(sh::BIND_VIEW_RADIANCE, v.radiance.view())
         .storageImage(sh::BIND_VIEW_DIRECTIONAL, v.directional.mipView(mip))
         .storageImage(sh::BIND_VIEW_OUT, output.view())
+        .storageBuffer(sh::BIND_VIEW_LIST, v.list.handle())
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelViewPush push{glm::uvec4(shaderMode(view.mode), mip, w, h),
                                  glm::uvec4(std::min(view.direction, sh::DIRECTIONAL_VOLUMES - 1), 0u, 0u, 0u)};

@@ -16,7 +16,7 @@ class VoxelVolumes;
 
 namespace dvsgi::render {
 
-enum class ViewMode { Final, VoxelAlbedo, VoxelNormal, VoxelEmission, VoxelRadiance, VoxelDirectional };
+enum class ViewMode { Final, VoxelAlbedo, VoxelNormal, VoxelEmission, VoxelRadiance, VoxelDirectional, VoxelAge };
 
 struct ViewSettings {
     ViewMode mode = ViewMode::Final;

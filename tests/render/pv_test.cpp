@@ -3,6 +3,7 @@
 // stale voxels freed once the camera sees the space they held.
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,6 +14,7 @@
 #include "gpu_fixture.h"
 #include "shared/pv_pass.h"
 #include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
 #include "vxgi/pv_voxelize.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_storage_io.h"
@@ -370,6 +372,56 @@ TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
     // no cell footprint corner lands in (docs/pv.md). Issue #12's goal is 99 %.
     EXPECT_GE(double(found), 0.98 * double(geometric));
     EXPECT_EQ(far, 0u);
+}
+
+sh::VoxelListHeader listHeader(const render::Renderer& r) {
+    const std::vector<uint8_t> bytes = gpu::readbackBuffer(context(), r.volumes()->list, sizeof(sh::VoxelListHeader));
+    sh::VoxelListHeader h;
+    std::memcpy(&h, bytes.data(), sizeof(h));
+    return h;
+}
+
+// The list keeps last frame's survivors first (counts.y) and this frame's new
+// voxels after them; --view voxels:age draws the new ones orange.
+TEST_F(PvVoxelize, AgeViewShowsWhatEachFrameFound) {
+    scene::Scene s;
+    const int white = addMaterial(s, glm::vec3(0.8f));
+    addQuad(s, white, glm::vec3(0.0f, layerCentre(16), 0.0f), 14.5f / 16.0f);
+    const int block = addQuad(s, white, glm::vec3(-0.5f, layerCentre(21), 0.0f), 2.5f / 16.0f);
+    addTopDownCamera(s, 2.0f, glm::radians(60.0f));
+    render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
+    rs.width = rs.height = 64;
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    sh::VoxelListHeader h = listHeader(r);
+    EXPECT_EQ(h.counts.y, 0u);
+    EXPECT_GT(h.counts.x, 0u);
+    const uint32_t first = h.counts.x;
+    r.renderFrame();
+    h = listHeader(r);
+    EXPECT_EQ(h.counts.y, first) << "every voxel survives an unchanged frame";
+    EXPECT_EQ(h.counts.x, first) << "and nothing new is found";
+
+    r.scene().nodes[size_t(block)].translation.x = 0.5f;
+    r.sceneChanged();
+    rs.view.mode = render::ViewMode::VoxelAge;
+    ASSERT_TRUE(r.applySettings(rs));
+    r.renderFrame();
+    h = listHeader(r);
+    std::printf("  first frame %u voxels; after the move %u kept, %u new\n", first, h.counts.y, h.counts.x - h.counts.y);
+    EXPECT_EQ(h.counts.y, first - 36u) << "all but the block's old voxels kept";
+    // The block's 36 voxels at its new place and the floor it hid before (20
+    // voxels at 64^2, of which the camera saw a sliver when the block was there).
+    EXPECT_EQ(h.counts.x - h.counts.y, 56u) << "new voxels";
+    const image::ImageRGBA32F img = r.readOutput();
+    size_t orange = 0, blue = 0;
+    for (size_t i = 0; i + 3 < img.rgba.size(); i += 4) {
+        orange += img.rgba[i] > 0.6f && img.rgba[i + 2] < 0.2f;
+        blue += img.rgba[i + 2] > 0.5f && img.rgba[i] < 0.5f;
+    }
+    std::printf("  age view: %zu orange pixels, %zu blue\n", orange, blue);
+    EXPECT_GT(orange, 20u);
+    EXPECT_GT(blue, 1000u);
 }
 
 class PvLights : public GpuTest, public ::testing::WithParamInterface<scene::LightType> {};
