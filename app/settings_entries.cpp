@@ -255,6 +255,12 @@ std::vector<Setting> imageAndVoxels() {
                       kAll, kFrame},
                      0, 16384, FIELD(settings.pv.grid)),
              "256"),
+        with(toggle({"pv-single-pass", kVoxels, "on|off", "",
+                    "--voxelizer pv: the chapter's single-pass variant: every grid voxel in a G-buffer's depth band "
+                    "takes the sample of the pixel it projects to (instead of each sample adding to its voxel)",
+                    kAll, kFrame},
+                   FIELD(settings.pv.singlePass)),
+             "on"),
         with(integer({"pv-rsm", kVoxels, "S", "texels",
                       "--voxelizer pv: reflective shadow maps of S x S texels, one per shadow view, injected like "
                       "the camera's G-buffer so that lit surfaces the camera has not seen are voxelized; 0 = off",

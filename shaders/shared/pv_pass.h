@@ -44,6 +44,17 @@ struct PvInjectPush {
 };
 DVSGI_CHECK_SIZE(PvInjectPush, 16);
 
+// Single-pass injection (--pv-single-pass, the chapter's section 6.2.3): one
+// invocation per grid voxel (PV_BAND_GROUP^3 per workgroup) projects the voxel
+// centre into a G-buffer and, when the recorded surface lies within the
+// tolerance of it along the ray, turns the voxel on with that pixel's sample.
+DVSGI_CONST(uint, PV_BAND_GROUP, 4);
+struct PvBandPush {
+    uvec4 sizes;  // x G-buffer width, y height
+    vec4 params;  // x tolerance (m): the voxel's half-diagonal
+};
+DVSGI_CHECK_SIZE(PvBandPush, 32);
+
 DVSGI_CONST(uint, BIND_PV_GRID, 0);
 DVSGI_CONST(uint, BIND_PV_ACCUM, 1);           // this frame's sums (written)
 DVSGI_CONST(uint, BIND_PV_LIST, 2);            // this frame's list (appended)

@@ -25,6 +25,9 @@ const uint32_t kCleanup[] = {
 const uint32_t kInject[] = {
 #include "shaders/pv_inject.comp.inc"
 };
+const uint32_t kBand[] = {
+#include "shaders/pv_band.comp.inc"
+};
 
 // A voxel the camera sees in the depth band keeps one fragment's worth of its
 // old sums: this frame's samples outweigh it, yet a voxel that no sample
@@ -71,6 +74,8 @@ PvVoxelizer::PvVoxelizer(const gpu::Context& ctx) : ctx_(ctx) {
     inject.pushConstantBytes = sizeof(sh::PvInjectPush);
     inject.pushConstantStages = cs;
     inject_ = gpu::Pipeline(ctx, gpu::Spirv(kInject), inject, "pv inject");
+    inject.pushConstantBytes = sizeof(sh::PvBandPush);
+    band_ = gpu::Pipeline(ctx, gpu::Spirv(kBand), inject, "pv inject (single pass)");
 }
 
 uint64_t PvVoxelizer::memoryBytes() const {
@@ -152,7 +157,8 @@ void PvVoxelizer::inject(VkCommandBuffer cmd, gpu::Tracker& tracker, const Voxel
         .image(g.normal, gpu::use::ShaderRead)
         .image(g.emission, gpu::use::ShaderRead)
         .flush(cmd);
-    gpu::bind(cmd, inject_);
+    const gpu::Pipeline& pipeline = settings.singlePass ? band_ : inject_;
+    gpu::bind(cmd, pipeline);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_PV_GRID, v.gridBuffer.handle())
         .storageImage(sh::BIND_PV_ACCUM, v.accum.view())
@@ -163,8 +169,16 @@ void PvVoxelizer::inject(VkCommandBuffer cmd, gpu::Tracker& tracker, const Voxel
         .sampledImage(sh::BIND_PV_GBUFFER_BASE, g.base.view(), g.pointSampler)
         .sampledImage(sh::BIND_PV_GBUFFER_NORMAL, g.normal.view(), g.pointSampler)
         .sampledImage(sh::BIND_PV_GBUFFER_EMISSION, g.emission.view(), g.pointSampler)
-        .push(ctx_, cmd, inject_);
+        .push(ctx_, cmd, pipeline);
     const VkExtent3D size = g.depth.desc().extent;
+    if (settings.singlePass) {
+        const uint32_t n = v.grid.n, groups = (n + sh::PV_BAND_GROUP - 1) / sh::PV_BAND_GROUP;
+        gpu::pushConstants(cmd, band_, VK_SHADER_STAGE_COMPUTE_BIT,
+                           sh::PvBandPush{glm::uvec4(size.width, size.height, n, 0u),
+                                          glm::vec4(0.5f * std::sqrt(3.0f) * v.grid.voxelSize, 0.0f, 0.0f, 0.0f)});
+        vkCmdDispatch(cmd, groups, groups, groups);
+        return;
+    }
     const glm::uvec2 cells = pvInjectionGrid(size.width, size.height, settings);
     gpu::pushConstants(cmd, inject_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::PvInjectPush{glm::uvec4(size.width, size.height, cells.x, cells.y)});

@@ -31,6 +31,10 @@ struct PvSettings {
     // rsm x rsm texels from the light, injected like the camera's, so that
     // lit surfaces the camera has not seen are voxelized too; 0 = off.
     uint32_t rsm = 256;
+    // The chapter's single-pass variant: every grid voxel in a G-buffer's
+    // depth band takes the sample of the pixel it projects to, instead of
+    // each sample (and its footprint corners) adding to its voxel.
+    bool singlePass = false;
 };
 
 // The depth buffers that can prove voxels empty. `views` holds
@@ -79,6 +83,7 @@ private:
     const gpu::Context& ctx_;
     gpu::Pipeline cleanup_;
     gpu::Pipeline inject_;
+    gpu::Pipeline band_;
     gpu::Image otherAccum_;
     gpu::Buffer otherList_;
 };

@@ -264,6 +264,40 @@ TEST_F(PvVoxelize, PlaneSeenByTheCameraEqualsItsGeometricVoxelization) {
     }
 }
 
+// The single-pass variant on the same square: a voxel is on when the surface
+// seen through its centre lies within its half-diagonal, so it finds the
+// square's voxels whose centres the square covers, one layer, and nothing
+// else (the border voxels, whose centres lie on the square's edges, may go
+// either way).
+TEST_F(PvVoxelize, SinglePassFindsTheVoxelsWhoseCentresTheSurfaceCovers) {
+    scene::Scene s;
+    addQuad(s, addMaterial(s, glm::vec3(0.6f, 0.3f, 0.2f)), glm::vec3(0.0f, layerCentre(16), 0.0f), 6.5f / 16.0f);
+    addTopDownCamera(s, 2.0f, glm::radians(60.0f));
+    render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
+    rs.pv.singlePass = true;
+    render::Renderer pv(context(), s, rs);
+    pv.renderFrame();
+    const std::vector<float> count = channel(vxgi::readAttributes(context(), *pv.volumes()), sh::CH_COUNT);
+    size_t interior = 0, border = 0, outside = 0;
+    for (int z = 0; z < int(kN); ++z)
+        for (int y = 0; y < int(kN); ++y)
+            for (int x = 0; x < int(kN); ++x) {
+                const bool on = count[(size_t(z) * kN + y) * kN + x] > 0.0f;
+                const bool inX = x >= 9 && x <= 22, inZ = z >= 9 && z <= 22;
+                const bool edge = x == 9 || x == 22 || z == 9 || z == 22;
+                if (y == 16 && inX && inZ && !edge) {
+                    interior += on;
+                } else if (y == 16 && inX && inZ) {
+                    border += on;
+                } else {
+                    outside += on;
+                }
+            }
+    std::printf("  interior voxels on %zu of 144, border %zu of 52, elsewhere %zu\n", interior, border, outside);
+    EXPECT_EQ(interior, 12u * 12u);
+    EXPECT_EQ(outside, 0u);
+}
+
 // A block above a floor moves: once the camera sees the floor where the block
 // was, the block's old voxels are gone and the floor under it is found; the
 // floor under the block's new place, seen before, is kept.
@@ -305,7 +339,10 @@ TEST_F(PvVoxelize, MovedObjectLeavesNoStaleVoxelsOnceTheSpaceItLeftIsSeen) {
 // The chapter's convergence: the camera orbits a sphere once around Y and
 // once around X; every voxel the exact geometric voxelizer marks should then
 // be found, and nothing far from the surface.
-TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
+class PvOrbit : public GpuTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(PvOrbit, AroundASphereConvergesToItsGeometricVoxelization) {
+    const bool singlePass = GetParam();
     scene::Scene s;
     addMeshNode(s, icosphere(3), addMaterial(s, glm::vec3(0.7f)), glm::vec3(0.03f, -0.02f, 0.01f),
                 glm::quat(1, 0, 0, 0), glm::vec3(0.55f));
@@ -328,11 +365,14 @@ TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
         }
     render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
     rs.width = rs.height = 256;  // about 5.6 pixels per voxel across the sphere
+    rs.pv.singlePass = singlePass;
     render::Renderer pv(context(), s, rs);
     pv.setCameraPath(path);
     render::Renderer exact(context(), s, pvSettings(vxgi::VoxelizerKind::Compute));
     exact.renderFrame();
-    // The sphere stays put, so no voxel found once may be freed later.
+    // The sphere stays put, so no voxel of its surface found once may be freed
+    // later (the single pass also turns on band voxels just off the surface,
+    // which later views rightly free).
     const std::vector<float> b = channel(vxgi::readAttributes(context(), *exact.volumes()), sh::CH_COUNT);
     std::vector<float> everFound(b.size(), 0.0f);
     for (const scene::CameraKey& key : path.keys) {
@@ -341,7 +381,7 @@ TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
         const std::vector<float> c = channel(vxgi::readAttributes(context(), *pv.volumes()), sh::CH_COUNT);
         size_t lost = 0;
         for (size_t i = 0; i < c.size(); ++i) {
-            lost += everFound[i] > 0.0f && c[i] == 0.0f;
+            lost += everFound[i] > 0.0f && c[i] == 0.0f && b[i] > 0.0f;
             if (c[i] > 0.0f) everFound[i] = 1.0f;
         }
         EXPECT_EQ(lost, 0u) << "voxels found earlier were freed at time " << key.time;
@@ -370,9 +410,14 @@ TEST_F(PvVoxelize, OrbitAroundASphereConvergesToItsGeometricVoxelization) {
     // Measured 98.42 % (96.36 % at 128^2, 92.45 % before the cell-corner
     // splats): the voxels missed are those the surface only clips, which
     // no cell footprint corner lands in (docs/pv.md). Issue #12's goal is 99 %.
-    EXPECT_GE(double(found), 0.98 * double(geometric));
+    // Single pass: 91.55 % measured; a voxel counts only when the ray through
+    // its centre meets the surface within its half-diagonal.
+    EXPECT_GE(double(found), (singlePass ? 0.91 : 0.98) * double(geometric));
     EXPECT_EQ(far, 0u);
 }
+
+INSTANTIATE_TEST_SUITE_P(Injection, PvOrbit, ::testing::Bool(),
+                         [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "SinglePass" : "Splats"; });
 
 sh::VoxelListHeader listHeader(const render::Renderer& r) {
     const std::vector<uint8_t> bytes = gpu::readbackBuffer(context(), r.volumes()->list, sizeof(sh::VoxelListHeader));
