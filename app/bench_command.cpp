@@ -21,6 +21,7 @@
 #include "progress.h"
 #include "render/renderer.h"
 #include "bench_flicker.h"
+#include "bench_pv.h"
 #include "render_command.h"
 #include "scene/load.h"
 #include "settings_table.h"
@@ -335,6 +336,7 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
 }  // namespace
 
 int runBench(const RenderOptions& options) {
+    if (options.pvTables) return runPvTables(options);
     RenderOptions o = options;
     if (!o.isGiven("width")) o.settings.width = 640;
     if (!o.isGiven("height")) o.settings.height = 360;

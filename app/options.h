@@ -56,6 +56,7 @@ struct RenderOptions {
     float benchMaxSeconds = 0.0f; // stop measuring a (scene, resolution) after this long; 0 = never
     bool benchQuick = false;      // Cornell box only, 32^3, 2 frames, 160x90
     bool benchTables = false;     // also the variants of the paper's Tables III and V
+    bool pvTables = false;        // instead: the progressive-voxelization chapter's Tables 6.1 and 6.2
 
     // What the command line said, for commands whose defaults depend on it
     // (the bench's image size) and for the record (the bench JSON).

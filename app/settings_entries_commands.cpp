@@ -221,6 +221,14 @@ std::vector<Setting> conesAndCommands() {
                    kBench},
                   FIELD(benchTables)),
              "on"),
+        with(flag({"pv-tables", kBenchGroup, "", "",
+                   "instead of the frame benchmark: the progressive-voxelization chapter's Table 6.1 (voxelization "
+                   "time: conference, dragon, Sponza at 128^3 and 256^3) and Table 6.2 (average Hausdorff distance "
+                   "after orbits: bunny, dragon, buddha at 64^3-256^3) as markdown; --bench-voxels replaces the "
+                   "sizes (docs/pv.md)",
+                   kBench},
+                  FIELD(pvTables)),
+             "on"),
 
         // dvsgi soak.
         with(integer({"soak-frames", kSoakGroup, "N", "", "frames in all", kSoak}, 1, 100000000, FIELD(soakFrames)),
