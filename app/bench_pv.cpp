@@ -125,9 +125,8 @@ nlohmann::json measureAccuracy(const gpu::Context& ctx, const scene::Scene& scen
     const std::vector<glm::dvec3> surface = bench::surfaceSamples(scene, samples);
     render::Renderer exact(ctx, scene, voxelOnly(o, n, vxgi::VoxelizerKind::Compute));
     exact.renderFrame();
-    const double cell = exact.volumes()->grid.voxelSize;
     const std::vector<glm::dvec3> reference = voxelCentres(ctx, *exact.volumes());
-    const double exactDistance = 100.0 * bench::averageHausdorff(surface, reference, cell).average() / diagonal;
+    const double exactDistance = 100.0 * bench::averageHausdorff(surface, reference).average() / diagonal;
 
     render::Renderer pv(ctx, scene, voxelOnly(o, n, vxgi::VoxelizerKind::Pv));
     const scene::CameraPath path = orbits(scene, perAxis);
@@ -138,7 +137,7 @@ nlohmann::json measureAccuracy(const gpu::Context& ctx, const scene::Scene& scen
         pv.setTime(key.time);
         pv.renderFrame();
         centres = voxelCentres(ctx, *pv.volumes());
-        perFrame.push_back(100.0 * bench::averageHausdorff(surface, centres, cell).average() / diagonal);
+        perFrame.push_back(100.0 * bench::averageHausdorff(surface, centres).average() / diagonal);
     }
     // Of the exact voxelizer's voxels, how many pv holds at the end.
     std::vector<uint8_t> mask(size_t(n) * n * n, 0);

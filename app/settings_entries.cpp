@@ -261,6 +261,12 @@ std::vector<Setting> imageAndVoxels() {
                     kAll, kFrame},
                    FIELD(settings.pv.singlePass)),
              "on"),
+        with(integer({"pv-views", kVoxels, "S", "texels",
+                      "--voxelizer pv: extra viewpoints: six 90-degree G-buffers of S x S texels around the camera, "
+                      "injected like its own, so that what it does not face is voxelized too; 0 = off",
+                      kAll, kNew},
+                     0, 8192, FIELD(settings.pv.views)),
+             "64"),
         with(integer({"pv-rsm", kVoxels, "S", "texels",
                       "--voxelizer pv: reflective shadow maps of S x S texels, one per shadow view, injected like "
                       "the camera's G-buffer so that lit surfaces the camera has not seen are voxelized; 0 = off",

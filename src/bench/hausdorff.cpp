@@ -4,59 +4,79 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <unordered_map>
 
 namespace dvsgi::bench {
 
 namespace {
 
-// Points binned in cubes of edge `cell`; nearest() searches shells of cells
-// around the query until no closer point can lie further out.
-class NearestGrid {
+// A k-d tree over the points (median splits along the widest axis): nearest()
+// descends to the query's leaf and backs out through the subtrees whose
+// splitting plane is nearer than the best distance so far. A uniform grid
+// searched in growing shells was tried first; a sample far from every voxel
+// (the side pv has not seen yet) made it visit millions of empty cells.
+class NearestTree {
 public:
-    NearestGrid(const std::vector<glm::dvec3>& points, double cell) : points_(points), cell_(cell) {
-        for (size_t i = 0; i < points.size(); ++i) cells_[key(cellOf(points[i]))].push_back(uint32_t(i));
-        for (const glm::dvec3& p : points) {
-            lo_ = glm::min(lo_, cellOf(p));
-            hi_ = glm::max(hi_, cellOf(p));
-        }
+    explicit NearestTree(const std::vector<glm::dvec3>& points) : points_(points), order_(points.size()) {
+        for (size_t i = 0; i < order_.size(); ++i) order_[i] = uint32_t(i);
+        if (!order_.empty()) build(0, order_.size());
     }
 
     double nearest(const glm::dvec3& q) const {
-        const glm::i64vec3 c = cellOf(q);
-        double best = std::numeric_limits<double>::infinity();
-        // Shell r holds the cells at Chebyshev distance r; a point in it is at
-        // least (r - 1) cells away.
-        const int64_t maxR = std::max({std::abs(c.x - lo_.x), std::abs(c.x - hi_.x), std::abs(c.y - lo_.y),
-                                       std::abs(c.y - hi_.y), std::abs(c.z - lo_.z), std::abs(c.z - hi_.z)});
-        for (int64_t r = 0; r <= maxR; ++r) {
-            if (double(r - 1) * cell_ > best) break;
-            for (int64_t z = c.z - r; z <= c.z + r; ++z)
-                for (int64_t y = c.y - r; y <= c.y + r; ++y)
-                    for (int64_t x = c.x - r; x <= c.x + r; ++x) {
-                        if (std::max({std::abs(x - c.x), std::abs(y - c.y), std::abs(z - c.z)}) != r) continue;
-                        const auto it = cells_.find(key({x, y, z}));
-                        if (it == cells_.end()) continue;
-                        for (uint32_t i : it->second) best = std::min(best, glm::distance(points_[i], q));
-                    }
-        }
-        return best;
+        double best2 = std::numeric_limits<double>::infinity();
+        if (!nodes_.empty()) search(0, q, best2);
+        return std::sqrt(best2);
     }
 
 private:
-    glm::i64vec3 cellOf(const glm::dvec3& p) const { return glm::i64vec3(glm::floor(p / cell_)); }
-    static uint64_t key(const glm::i64vec3& c) {
-        const uint64_t mask = (1ull << 21) - 1;
-        return (uint64_t(c.x) & mask) | ((uint64_t(c.y) & mask) << 21) | ((uint64_t(c.z) & mask) << 42);
+    static constexpr size_t kLeaf = 8;
+    struct Node {
+        uint32_t begin, end;   // the points order_[begin, end)
+        int axis = -1;         // -1: a leaf
+        double split = 0.0;
+        uint32_t left = 0, right = 0;
+    };
+
+    uint32_t build(size_t begin, size_t end) {
+        const uint32_t id = uint32_t(nodes_.size());
+        nodes_.push_back({uint32_t(begin), uint32_t(end)});
+        if (end - begin <= kLeaf) return id;
+        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (size_t i = begin; i < end; ++i) lo = glm::min(lo, points_[order_[i]]), hi = glm::max(hi, points_[order_[i]]);
+        const glm::dvec3 extent = hi - lo;
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        const size_t mid = (begin + end) / 2;
+        std::nth_element(order_.begin() + long(begin), order_.begin() + long(mid), order_.begin() + long(end),
+                         [&](uint32_t a, uint32_t b) { return points_[a][axis] < points_[b][axis]; });
+        const double split = points_[order_[mid]][axis];
+        const uint32_t left = build(begin, mid), right = build(mid, end);
+        Node& n = nodes_[id];
+        n.axis = axis;
+        n.split = split;
+        n.left = left;
+        n.right = right;
+        return id;
+    }
+
+    void search(uint32_t id, const glm::dvec3& q, double& best2) const {
+        const Node& n = nodes_[id];
+        if (n.axis < 0) {
+            for (uint32_t i = n.begin; i < n.end; ++i) {
+                const glm::dvec3 d = points_[order_[i]] - q;
+                best2 = std::min(best2, glm::dot(d, d));
+            }
+            return;
+        }
+        const double d = q[n.axis] - n.split;
+        search(d < 0.0 ? n.left : n.right, q, best2);
+        if (d * d < best2) search(d < 0.0 ? n.right : n.left, q, best2);
     }
 
     const std::vector<glm::dvec3>& points_;
-    double cell_;
-    std::unordered_map<uint64_t, std::vector<uint32_t>> cells_;
-    glm::i64vec3 lo_{std::numeric_limits<int64_t>::max()}, hi_{std::numeric_limits<int64_t>::min()};
+    std::vector<uint32_t> order_;
+    std::vector<Node> nodes_;
 };
 
-double meanNearest(const std::vector<glm::dvec3>& from, const NearestGrid& to) {
+double meanNearest(const std::vector<glm::dvec3>& from, const NearestTree& to) {
     if (from.empty()) return std::numeric_limits<double>::infinity();
     double sum = 0.0;
     for (const glm::dvec3& p : from) sum += to.nearest(p);
@@ -105,15 +125,14 @@ std::vector<glm::dvec3> surfaceSamples(const scene::Scene& s, size_t count) {
     return out;
 }
 
-Hausdorff averageHausdorff(const std::vector<glm::dvec3>& surface, const std::vector<glm::dvec3>& voxelCentres,
-                           double cell) {
+Hausdorff averageHausdorff(const std::vector<glm::dvec3>& surface, const std::vector<glm::dvec3>& voxelCentres) {
     Hausdorff h;
     if (surface.empty() || voxelCentres.empty()) {
         h.surfaceToVoxels = h.voxelsToSurface = std::numeric_limits<double>::infinity();
         return h;
     }
-    h.surfaceToVoxels = meanNearest(surface, NearestGrid(voxelCentres, cell));
-    h.voxelsToSurface = meanNearest(voxelCentres, NearestGrid(surface, cell));
+    h.surfaceToVoxels = meanNearest(surface, NearestTree(voxelCentres));
+    h.voxelsToSurface = meanNearest(voxelCentres, NearestTree(surface));
     return h;
 }
 

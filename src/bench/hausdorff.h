@@ -23,10 +23,8 @@ struct Hausdorff {
     double average() const { return 0.5 * (surfaceToVoxels + voxelsToSurface); }
 };
 
-// Both one-sided mean distances (metres). `cell` sizes the uniform grids the
-// nearest-point searches bin the points in (about the voxel size). Either set
-// empty: infinite distances.
-Hausdorff averageHausdorff(const std::vector<glm::dvec3>& surface, const std::vector<glm::dvec3>& voxelCentres,
-                           double cell);
+// Both one-sided mean distances (metres), by nearest-point searches in k-d
+// trees. Either set empty: infinite distances.
+Hausdorff averageHausdorff(const std::vector<glm::dvec3>& surface, const std::vector<glm::dvec3>& voxelCentres);
 
 }  // namespace dvsgi::bench

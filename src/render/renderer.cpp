@@ -236,30 +236,63 @@ void Renderer::uploadPvViews() {
     gpu::uploadBuffer(ctx_, *pvViews_, views.data(), bytes);
     pvViewCount_ = uint32_t(views.size());
 
-    // The lights' G-buffers: only the matrices and the size matter to the
-    // G-buffer pass and the injection.
-    const uint32_t rsm = settings_.voxels > 0 ? settings_.pv.rsm : 0;
-    const size_t count = rsm ? shadowViewProj_.size() : 0;
-    if (rsm_.size() != count) {
-        rsm_.clear();
-        rsmFrames_.clear();
-        for (size_t i = 0; i < count; ++i) {
-            rsm_.push_back(createGBuffer(ctx_, rsm, rsm, true));
-            rsmFrames_.push_back(std::make_unique<gpu::Buffer>(
-                ctx_, sizeof(sh::FrameConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                gpu::MemoryUse::Device, "rsm frame constants"));
-        }
-    }
-    // Shadow views keep glm's clip space; the camera's flips y (so row 0 is the
-    // top of the image), and the G-buffer's facing test, which turns normals
-    // toward the viewer, follows the winding: flip the lights' views too.
+    // The extra G-buffers: only the matrices and the size matter to the
+    // G-buffer pass and the injection. Shadow views keep glm's clip space; the
+    // camera's flips y (so row 0 is the top of the image), and the G-buffer's
+    // facing test, which turns normals toward the viewer, follows the
+    // winding: flip the lights' views too.
     const glm::mat4 flipY = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f));
-    for (size_t i = 0; i < count; ++i) {
+    std::vector<glm::mat4> lights;
+    if (settings_.pv.rsm)
+        for (const glm::mat4& m : shadowViewProj_) lights.push_back(flipY * m);
+    setPvViews(rsm_, lights, settings_.pv.rsm);
+    // Six 90-degree views around the camera, to find what it does not face.
+    std::vector<glm::mat4> around;
+    if (settings_.pv.views) {
+        const glm::vec3 eye(camera_.world[3]);
+        const glm::vec3 faces[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+        glm::mat4 proj = glm::perspective(glm::half_pi<float>(), 1.0f, camera_.camera.znear, camera_.camera.zfar);
+        proj[1][1] *= -1.0f;
+        for (const glm::vec3& d : faces)
+            around.push_back(proj * glm::lookAt(eye, eye + d, std::abs(d.y) > 0.5f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0)));
+    }
+    setPvViews(around_, around, settings_.pv.views);
+}
+
+void Renderer::setPvViews(std::vector<PvView>& views, const std::vector<glm::mat4>& viewProj, uint32_t size) {
+    if (views.size() != viewProj.size()) {
+        views.clear();
+        for (size_t i = 0; i < viewProj.size(); ++i)
+            views.push_back({createGBuffer(ctx_, size, size, true),
+                             std::make_unique<gpu::Buffer>(
+                                 ctx_, sizeof(sh::FrameConstants),
+                                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 gpu::MemoryUse::Device, "pv view frame constants")});
+    }
+    for (size_t i = 0; i < viewProj.size(); ++i) {
         sh::FrameConstants f{};
-        f.viewProj = flipY * shadowViewProj_[i];
+        f.viewProj = viewProj[i];
         f.invViewProj = glm::inverse(f.viewProj);
-        f.sizes = glm::uvec4(rsm, rsm, 0u, 0u);
-        gpu::uploadBuffer(ctx_, *rsmFrames_[i], &f, sizeof(f));
+        f.sizes = glm::uvec4(size, size, 0u, 0u);
+        gpu::uploadBuffer(ctx_, *views[i].frame, &f, sizeof(f));
+    }
+}
+
+void Renderer::recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer) {
+    if (views.empty()) return;
+    gpu::GpuTimerScope scope(timers_.get(), cmd, timer);
+    for (const PvView& v : views) gbuffer_->record(cmd, tracker_, *sceneGpu_, *v.frame, v.gbuffer, nullptr);
+}
+
+void Renderer::injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer) {
+    if (views.empty()) return;
+    gpu::GpuTimerScope scope(timers_.get(), cmd, timer);
+    vxgi::PvSettings everyTexel = settings_.pv;
+    everyTexel.grid = 0;
+    for (const PvView& v : views) {
+        const GBuffer& g = v.gbuffer;
+        const vxgi::PvGBufferInputs in{g.depth, g.base, g.normal, g.emission, *v.frame, samplers_->point.handle()};
+        pv_->inject(cmd, tracker_, *volumes_, in, everyTexel, nullptr);
     }
 }
 
@@ -327,28 +360,16 @@ void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
     FrameTargets& f = *targets_;
     shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, f.shadowMap, t);
     gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
-    if (!rsm_.empty()) {
-        gpu::GpuTimerScope scope(t, cmd, "pv rsm");
-        for (size_t i = 0; i < rsm_.size(); ++i)
-            gbuffer_->record(cmd, tracker_, *sceneGpu_, *rsmFrames_[i], rsm_[i], nullptr);
-    }
+    recordPvViews(cmd, rsm_, "pv rsm");
+    recordPvViews(cmd, around_, "pv views");
     const vxgi::PvDepthInputs depth{f.gbuffer.depth, f.shadowMap, *pvViews_, pvViewCount_, samplers_->point.handle()};
     pv_->cleanup(cmd, tracker_, *volumes_, depth, t);
     list_->finish(cmd, tracker_, *volumes_, true);  // the survivors count as "kept" (static)
     const vxgi::PvGBufferInputs g{f.gbuffer.depth, f.gbuffer.base,   f.gbuffer.normal,
                                   f.gbuffer.emission, *frame_, samplers_->point.handle()};
     pv_->inject(cmd, tracker_, *volumes_, g, settings_.pv, t);
-    if (!rsm_.empty()) {
-        gpu::GpuTimerScope scope(t, cmd, "pv inject rsm");
-        vxgi::PvSettings everyTexel = settings_.pv;
-        everyTexel.grid = 0;
-        for (size_t i = 0; i < rsm_.size(); ++i) {
-            const GBuffer& r = rsm_[i];
-            const vxgi::PvGBufferInputs light{r.depth, r.base, r.normal, r.emission, *rsmFrames_[i],
-                                              samplers_->point.handle()};
-            pv_->inject(cmd, tracker_, *volumes_, light, everyTexel, nullptr);
-        }
-    }
+    injectPvViews(cmd, rsm_, "pv inject rsm");
+    injectPvViews(cmd, around_, "pv inject views");
     list_->finish(cmd, tracker_, *volumes_, false);  // this frame's new voxels come after them
     list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
 }
@@ -527,7 +548,7 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
     return a.width != b.width || a.height != b.height || a.supersample != b.supersample ||
            a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels || a.voxelSlots != b.voxelSlots ||
            a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
-           a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.pv.rsm != b.pv.rsm ||
+           a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.pv.rsm != b.pv.rsm || a.pv.views != b.pv.views ||
            a.gather.traceScale != b.gather.traceScale ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));

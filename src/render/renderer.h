@@ -147,12 +147,20 @@ public:
     uint32_t shadowViewCount() const { return viewCount_; }  // shadow-map layers rendered per frame
 
 private:
+    // An extra G-buffer for pv (see rsm_, around_) and its FrameConstants.
+    struct PvView {
+        GBuffer gbuffer;
+        std::unique_ptr<gpu::Buffer> frame;
+    };
     void updateFrameConstants();
     void uploadLights();
     void recordVoxels(VkCommandBuffer cmd);
     void recordStaticVoxels(VkCommandBuffer cmd);
     void recordProgressiveVoxels(VkCommandBuffer cmd);
     void uploadPvViews();
+    void setPvViews(std::vector<PvView>& views, const std::vector<glm::mat4>& viewProj, uint32_t size);
+    void recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
+    void injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
@@ -190,10 +198,10 @@ private:
     uint32_t pvViewCount_ = 0;
     std::vector<glm::mat4> shadowViewProj_;  // the uploaded shadow views' matrices
     std::vector<glm::vec4> shadowViewParams_;
-    // Reflective shadow maps: a G-buffer per shadow view (settings.pv.rsm),
-    // rendered with that view's FrameConstants.
-    std::vector<GBuffer> rsm_;
-    std::vector<std::unique_ptr<gpu::Buffer>> rsmFrames_;
+    // Extra G-buffers for pv, each rendered with its own FrameConstants:
+    // reflective shadow maps, one per shadow view (settings.pv.rsm), and six
+    // views around the camera (settings.pv.views).
+    std::vector<PvView> rsm_, around_;
     std::unique_ptr<VoxelViewPass> voxelView_;
     std::unique_ptr<vxgi::VoxelListPass> list_;
     std::unique_ptr<vxgi::InjectPass> inject_;

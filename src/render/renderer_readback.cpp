@@ -52,9 +52,11 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
         if (pv_) items.push_back({"pv last frame's attributes and list", pv_->memoryBytes()});
-        uint64_t rsm = 0;
-        for (const GBuffer& g : rsm_) rsm += g.memoryBytes();
+        uint64_t rsm = 0, around = 0;
+        for (const PvView& v : rsm_) rsm += v.gbuffer.memoryBytes();
+        for (const PvView& v : around_) around += v.gbuffer.memoryBytes();
         if (rsm) items.push_back({"pv reflective shadow maps", rsm});
+        if (around) items.push_back({"pv views around the camera", around});
     }
     return items;
 }

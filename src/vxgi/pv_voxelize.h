@@ -34,6 +34,10 @@ struct PvSettings {
     // too bright (lit surfaces found, the occluders between them and what
     // the camera sees not), the camera alone 0.92-1.10x (docs/pv.md).
     uint32_t rsm = 0;
+    // Extra viewpoints: six 90-degree G-buffers of views x views texels
+    // around the camera, injected like the camera's, so that what it does
+    // not face is found too; 0 = off.
+    uint32_t views = 0;
     // The chapter's single-pass variant: every grid voxel in a G-buffer's
     // depth band takes the sample of the pixel it projects to, instead of
     // each sample (and its footprint corners) adding to its voxel.

@@ -1,5 +1,6 @@
 // The average Hausdorff distance of the progressive-voxelization tables
 // (bench/hausdorff.h) on cases with known answers.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -17,7 +18,7 @@ std::vector<glm::dvec3> planeGrid(double z) {
 }
 
 TEST(Hausdorff, ShiftedCopyIsItsShiftAway) {
-    const Hausdorff h = averageHausdorff(planeGrid(0.0), planeGrid(0.1), 0.0625);
+    const Hausdorff h = averageHausdorff(planeGrid(0.0), planeGrid(0.1));
     EXPECT_NEAR(h.surfaceToVoxels, 0.1, 1e-12);
     EXPECT_NEAR(h.voxelsToSurface, 0.1, 1e-12);
     EXPECT_NEAR(h.average(), 0.1, 1e-12);
@@ -26,13 +27,37 @@ TEST(Hausdorff, ShiftedCopyIsItsShiftAway) {
 TEST(Hausdorff, AStrayVoxelCountsOnlyFromItsSide) {
     std::vector<glm::dvec3> voxels = planeGrid(0.1);
     voxels.push_back({0.0, 0.0, 1.0});  // 1 m above the nearest sample, (0, 0, 0)
-    const Hausdorff h = averageHausdorff(planeGrid(0.0), voxels, 0.0625);
+    const Hausdorff h = averageHausdorff(planeGrid(0.0), voxels);
     EXPECT_NEAR(h.surfaceToVoxels, 0.1, 1e-12);
     EXPECT_NEAR(h.voxelsToSurface, (400 * 0.1 + 1.0) / 401.0, 1e-12);
 }
 
+// Scattered points against a brute-force search (the k-d tree's back-tracking).
+TEST(Hausdorff, MatchesBruteForceOnScatteredPoints) {
+    std::vector<glm::dvec3> a, b;
+    uint32_t state = 12345u;
+    auto next = [&] {
+        state = state * 1664525u + 1013904223u;
+        return double(state >> 8) / double(1u << 24);
+    };
+    for (int i = 0; i < 700; ++i) a.push_back({next(), next(), 0.3 * next()});
+    for (int i = 0; i < 300; ++i) b.push_back({2.0 * next() - 0.5, next(), next()});
+    auto brute = [](const std::vector<glm::dvec3>& from, const std::vector<glm::dvec3>& to) {
+        double sum = 0.0;
+        for (const glm::dvec3& p : from) {
+            double best = 1e30;
+            for (const glm::dvec3& q : to) best = std::min(best, glm::distance(p, q));
+            sum += best;
+        }
+        return sum / double(from.size());
+    };
+    const Hausdorff h = averageHausdorff(a, b);
+    EXPECT_NEAR(h.surfaceToVoxels, brute(a, b), 1e-12);
+    EXPECT_NEAR(h.voxelsToSurface, brute(b, a), 1e-12);
+}
+
 TEST(Hausdorff, NoVoxelsIsInfinitelyFar) {
-    EXPECT_TRUE(std::isinf(averageHausdorff(planeGrid(0.0), {}, 0.1).average()));
+    EXPECT_TRUE(std::isinf(averageHausdorff(planeGrid(0.0), {}).average()));
 }
 
 TEST(Hausdorff, SurfaceSamplesCoverTheTrianglesByArea) {

@@ -495,6 +495,18 @@ TEST_P(PvLights, ReflectiveShadowMapsVoxelizeWhatOnlyALightSees) {
     expectExactVoxels(s, rs, 14 * 14);  // the normal weight included: all +Y, facing the light
 }
 
+// The extra viewpoints: the camera looks up into empty space, and the view
+// around it that looks down finds the floor (about 4 texels per voxel at 64^2).
+TEST_F(PvVoxelize, ViewsAroundTheCameraFindWhatItDoesNotFace) {
+    scene::Scene s;
+    addQuad(s, addMaterial(s, glm::vec3(0.6f, 0.5f, 0.4f)), glm::vec3(0.0f, layerCentre(16), 0.0f), 6.5f / 16.0f);
+    addTopDownCamera(s, 0.5f, glm::radians(60.0f));
+    s.nodes.back().rotation = glm::angleAxis(glm::half_pi<float>(), glm::vec3(1, 0, 0));  // looks up
+    render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
+    rs.pv.views = 64;
+    expectExactVoxels(s, rs, 14 * 14);
+}
+
 INSTANTIATE_TEST_SUITE_P(LightTypes, PvLights,
                          ::testing::Values(scene::LightType::Directional, scene::LightType::Point, scene::LightType::Spot),
                          [](const ::testing::TestParamInfo<scene::LightType>& info) {
