@@ -6,6 +6,7 @@
 #include "shared/voxel_list_pass.h"
 #include "shared/voxelize_pass.h"
 #include "shared/pv_pass.h"
+#include "shared/voxelize_compute_pass.h"
 
 // Progressive voxelization, injection (shared/pv_pass.h): each sample of the
 // camera's G-buffer on the injection grid puts its surface point's material
@@ -32,6 +33,41 @@ vec3 unproject(vec2 ndc, float depth) {
     return p.xyz / p.w;
 }
 
+// Whether axis `a` separates the quad q (voxel units, relative to a voxel's
+// centre) from that voxel, grown like the geometric voxelizers' boxes.
+bool separates(vec3 a, vec3 q[4]) {
+    float lo = dot(q[0], a), hi = lo;
+    for (int k = 1; k < 4; ++k) {
+        float d = dot(q[k], a);
+        lo = min(lo, d);
+        hi = max(hi, d);
+    }
+    float r = (0.5 + VOXC_BOX_GROWTH) * (abs(a.x) + abs(a.y) + abs(a.z));
+    return lo > r || hi < -r;
+}
+
+// Separating-axis test of a planar convex quad against the voxel at the
+// origin: the box's three axes, the quad's normal, and each quad edge
+// crossed with each box axis.
+bool quadTouchesVoxel(vec3 q[4], vec3 n) {
+    for (int i = 0; i < 3; ++i) {
+        vec3 axis = vec3(0.0);
+        axis[i] = 1.0;
+        if (separates(axis, q)) return false;
+    }
+    if (separates(n, q)) return false;
+    for (int k = 0; k < 4; ++k) {
+        vec3 e = q[(k + 1) % 4] - q[k];
+        for (int i = 0; i < 3; ++i) {
+            vec3 axis = vec3(0.0);
+            axis[i] = 1.0;
+            vec3 c = cross(e, axis);
+            if (dot(c, c) > 1e-12 && separates(c, q)) return false;
+        }
+    }
+    return true;
+}
+
 void main() {
     uvec2 cell = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(cell, pc.sizes.zw))) return;
@@ -42,35 +78,56 @@ void main() {
     float depth = texelFetch(depthBuffer, pixel, 0).r;
     if (emission.a == 0.0 || depth >= 1.0) return;  // background
     vec2 ndc = (vec2(pixel) + 0.5) / size * 2.0 - 1.0;
-    vec3 p = unproject(ndc, depth);
     float voxelSize = grid.originSize.w;
-    ivec3 voxel = ivec3(floor((p - grid.originSize.xyz) / voxelSize));
+    // Voxel units from here on.
+    vec3 p = (unproject(ndc, depth) - grid.originSize.xyz) / voxelSize;
+    ivec3 voxel = ivec3(floor(p));
     vec3 base = texelFetch(baseBuffer, pixel, 0).rgb;
     vec3 n = texelFetch(normalBuffer, pixel, 0).xyz;
-    // The sample stands for the surface its cell covers: the corners of the
-    // cell's footprint on the tangent plane also get it, so that a voxel the
-    // surface only clips (the geometric voxelizers mark every voxel a surface
-    // touches) is found without waiting for a pixel centre to land in it.
-    // Corners farther than a voxel (grazing views) are left out.
-    ivec3 done[5];
-    int count = 0;
-    for (int k = 0; k < 5; ++k) {
-        ivec3 v = voxel;
-        if (k > 0) {
-            vec2 corner = (vec2(cell) + vec2((k - 1) & 1, (k - 1) >> 1)) * cellSize;
-            vec2 c = corner / size * 2.0 - 1.0;
-            vec3 o = unproject(c, 0.0), d = unproject(c, 1.0) - o;
-            float dn = dot(d, n);
-            if (abs(dn) < 1e-12) continue;
-            vec3 x = o + d * (dot(p - o, n) / dn);
-            if (distance(x, p) > voxelSize) continue;
-            v = ivec3(floor((x - grid.originSize.xyz) / voxelSize));
+    // The sample stands for the surface its cell covers: the cell's footprint
+    // on the tangent plane, a convex quad, gets it in every voxel it touches
+    // (as the geometric voxelizers mark every voxel a surface touches), so a
+    // voxel the surface only clips is found without waiting for a pixel
+    // centre to land in it. A footprint reaching more than a voxel from the
+    // sample (grazing views) falls back to the sample's own voxel.
+    vec3 q[4];
+    bool footprint = true;
+    for (int k = 0; k < 4; ++k) {
+        // Corners in order around the cell: (0,0), (1,0), (1,1), (0,1).
+        vec2 corner = (vec2(cell) + vec2(k == 1 || k == 2 ? 1.0 : 0.0, k >= 2 ? 1.0 : 0.0)) * cellSize;
+        vec2 c = corner / size * 2.0 - 1.0;
+        vec3 o = (unproject(c, 0.0) - grid.originSize.xyz) / voxelSize;
+        vec3 d = (unproject(c, 1.0) - grid.originSize.xyz) / voxelSize - o;
+        float dn = dot(d, n);
+        if (abs(dn) < 1e-12) {
+            footprint = false;
+            break;
         }
-        if (any(lessThan(v, ivec3(0))) || any(greaterThanEqual(v, ivec3(grid.dims.x)))) continue;
-        bool seen = false;
-        for (int j = 0; j < count; ++j) seen = seen || all(equal(done[j], v));
-        if (seen) continue;
-        done[count++] = v;
-        accumulateFragment(v, VOXELIZE_STATIC, base, emission.rgb, n);
+        q[k] = o + d * (dot(p - o, n) / dn);
+        if (any(greaterThan(abs(q[k] - p), vec3(1.0)))) {
+            footprint = false;
+            break;
+        }
     }
+    ivec3 lo = voxel, hi = voxel;
+    if (footprint) {
+        vec3 qlo = min(min(q[0], q[1]), min(q[2], q[3])), qhi = max(max(q[0], q[1]), max(q[2], q[3]));
+        lo = ivec3(floor(qlo - VOXC_BOX_GROWTH));
+        hi = ivec3(floor(qhi + VOXC_BOX_GROWTH));
+    }
+    lo = max(lo, ivec3(0));
+    hi = min(hi, ivec3(int(grid.dims.x) - 1));
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                ivec3 v = ivec3(x, y, z);
+                if (footprint) {
+                    vec3 r[4];
+                    for (int k = 0; k < 4; ++k) r[k] = q[k] - (vec3(v) + 0.5);
+                    if (!quadTouchesVoxel(r, n)) continue;
+                } else if (v != voxel) {
+                    continue;
+                }
+                accumulateFragment(v, VOXELIZE_STATIC, base, emission.rgb, n);
+            }
 }
