@@ -32,7 +32,7 @@ struct PvSettings {
     // lit surfaces the camera has not seen are voxelized too; 0 = off. Off
     // by default: along a Sponza walk they made the indirect light 1.4-3.1x
     // too bright (lit surfaces found, the occluders between them and what
-    // the camera sees not), the camera alone 0.92-1.10x (docs/pv.md).
+    // the camera sees not), the camera alone 0.92-1.11x (docs/pv.md).
     uint32_t rsm = 0;
     // Extra viewpoints: six 90-degree G-buffers of views x views texels
     // around the camera, injected like the camera's, so that what it does
