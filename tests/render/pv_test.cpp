@@ -304,15 +304,23 @@ TEST_F(PvVoxelize, SinglePassFindsTheVoxelsWhoseCentresTheSurfaceCovers) {
     EXPECT_EQ(outside, 0u);
 }
 
+// A floor of 30 x 30 voxels in layer 16 and, above its left half, a block of
+// 6 x 6 voxels in layer 21 (at x = -0.5 m), seen from above; returns the
+// block's node.
+int floorAndBlock(scene::Scene& s) {
+    const int white = addMaterial(s, glm::vec3(0.8f));
+    addQuad(s, white, glm::vec3(0.0f, layerCentre(16), 0.0f), 14.5f / 16.0f);
+    const int block = addQuad(s, white, glm::vec3(-0.5f, layerCentre(21), 0.0f), 2.5f / 16.0f);
+    addTopDownCamera(s, 2.0f, glm::radians(60.0f));
+    return block;
+}
+
 // A block above a floor moves: once the camera sees the floor where the block
 // was, the block's old voxels are gone and the floor under it is found; the
 // floor under the block's new place, seen before, is kept.
 TEST_F(PvVoxelize, MovedObjectLeavesNoStaleVoxelsOnceTheSpaceItLeftIsSeen) {
     scene::Scene s;
-    const int white = addMaterial(s, glm::vec3(0.8f));
-    addQuad(s, white, glm::vec3(0.0f, layerCentre(16), 0.0f), 14.5f / 16.0f);
-    const int block = addQuad(s, white, glm::vec3(-0.5f, layerCentre(21), 0.0f), 2.5f / 16.0f);
-    addTopDownCamera(s, 2.0f, glm::radians(60.0f));
+    const int block = floorAndBlock(s);
     render::Renderer r(context(), s, pvSettings(vxgi::VoxelizerKind::Pv));
     r.renderFrame();
     auto layerVoxels = [&](int layer, bool left) {
@@ -436,10 +444,7 @@ sh::VoxelListHeader listHeader(const render::Renderer& r) {
 // voxels after them; --view voxels:age draws the new ones orange.
 TEST_F(PvVoxelize, AgeViewShowsWhatEachFrameFound) {
     scene::Scene s;
-    const int white = addMaterial(s, glm::vec3(0.8f));
-    addQuad(s, white, glm::vec3(0.0f, layerCentre(16), 0.0f), 14.5f / 16.0f);
-    const int block = addQuad(s, white, glm::vec3(-0.5f, layerCentre(21), 0.0f), 2.5f / 16.0f);
-    addTopDownCamera(s, 2.0f, glm::radians(60.0f));
+    const int block = floorAndBlock(s);
     render::RenderSettings rs = pvSettings(vxgi::VoxelizerKind::Pv);
     rs.width = rs.height = 64;
     render::Renderer r(context(), s, rs);
