@@ -1,6 +1,8 @@
 #include "bench_pv.h"
 
 #include <algorithm>
+#include <cstdarg>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -158,10 +160,54 @@ nlohmann::json measureAccuracy(const gpu::Context& ctx, const scene::Scene& scen
             {"geometric_found_percent", reference.empty() ? 0.0 : 100.0 * double(found) / double(reference.size())}};
 }
 
+// Everything the tables print goes to stdout and, for --pv-doc, into this.
+std::string g_markdown;
+
+void emit(const char* format, ...) __attribute__((format(printf, 1, 2)));
+void emit(const char* format, ...) {
+    char line[2048];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(line, sizeof line, format, args);
+    va_end(args);
+    std::fputs(line, stdout);
+    std::fflush(stdout);
+    g_markdown += line;
+}
+
+constexpr const char* kDocBegin = "<!-- pv-tables: begin -->";
+constexpr const char* kDocEnd = "<!-- pv-tables: end -->";
+
+// The text of `file` and where its markers lie; throws naming the file.
+std::string readDoc(const std::string& file, size_t& begin, size_t& end) {
+    std::ifstream in(file);
+    if (!in) throw image::IoError("--pv-doc: " + file + ": cannot open");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    begin = text.find(kDocBegin);
+    end = text.find(kDocEnd);
+    if (begin == std::string::npos || end == std::string::npos || end < begin)
+        throw image::IoError("--pv-doc: " + file + " lacks the lines '" + kDocBegin + "' and '" + kDocEnd + "'");
+    return text;
+}
+
+// Replaces the lines between the markers of `file` with the tables.
+void writeIntoDoc(const std::string& file, const std::string& tables) {
+    size_t begin = 0, end = 0;
+    const std::string text = readDoc(file, begin, end);
+    const size_t from = text.find('\n', begin);
+    const std::string out = text.substr(0, from + 1) + "\n" + tables + "\n" + text.substr(end);
+    std::ofstream f(file);
+    if (!(f << out)) throw image::IoError("--pv-doc: " + file + ": write failed");
+}
+
 }  // namespace
 
 int runPvTables(const RenderOptions& options) {
     RenderOptions o = options;
+    if (!o.pvDoc.empty()) {
+        size_t begin = 0, end = 0;
+        readDoc(o.pvDoc, begin, end);  // a bad file fails now, not after the measurements
+    }
     if (!o.isGiven("width")) o.settings.width = 512;
     if (!o.isGiven("height")) o.settings.height = 512;
     const fs::path scenes = fs::path(o.sharedDir) / "scenes";
@@ -204,11 +250,11 @@ int runPvTables(const RenderOptions& options) {
         return loadForOptions(so);
     };
 
-    std::printf("Table 6.1 (%s, %ux%u): voxelization, ms (geometric: static voxelization with its clear, "
+    emit("Table 6.1 (%s, %ux%u): voxelization, ms (geometric: static voxelization with its clear, "
                 "median of %d; pv: its passes in a frame, and the G-buffer the frame renders)\n\n",
                 ctx.deviceName.c_str(), o.settings.width, o.settings.height, kReps);
-    std::printf("| scene | voxels | triangles | geometry | compute | pv | pv + G-buffer | pv / geometry |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
+    emit("| scene | voxels | triangles | geometry | compute | pv | pv + G-buffer | pv / geometry |\n");
+    emit("|---|---|---|---|---|---|---|---|\n");
     for (const Model& m : timed) {
         const scene::Scene s = load(m.file);
         for (uint32_t n : timedSizes) {
@@ -217,7 +263,7 @@ int runPvTables(const RenderOptions& options) {
             try {
                 row = timeVoxelizers(ctx, s, o, n, kReps);
             } catch (const std::exception& e) {
-                std::printf("| %s | %u³ | – | not measured: %s |||||\n", m.name.c_str(), n, e.what());
+                emit("| %s | %u³ | – | not measured: %s |||||\n", m.name.c_str(), n, e.what());
                 out["table_6_1"].push_back({{"scene", m.name}, {"voxels", n}, {"error", e.what()}});
                 continue;
             }
@@ -225,18 +271,18 @@ int runPvTables(const RenderOptions& options) {
             row["scene"] = m.name;
             row["voxels"] = n;
             const double geometry = row["geometry"], compute = row["compute"], pv = row["pv"], gb = row["gbuffer"];
-            std::printf("| %s | %u³ | %llu | %.1f | %.1f | %.2f | %.1f | %.1f %% |\n", m.name.c_str(), n,
+            emit("| %s | %u³ | %llu | %.1f | %.1f | %.2f | %.1f | %.1f %% |\n", m.name.c_str(), n,
                         (unsigned long long)row["triangles"].get<uint64_t>(), geometry, compute, pv, pv + gb,
                         100.0 * pv / geometry);
             std::fflush(stdout);
             out["table_6_1"].push_back(row);
         }
     }
-    std::printf("\nTable 6.2 (%s, %ux%u): average Hausdorff distance, %% of the bounding-box diagonal, after "
+    emit("\nTable 6.2 (%s, %ux%u): average Hausdorff distance, %% of the bounding-box diagonal, after "
                 "orbiting once around each principal axis (%d views per orbit; %zu surface samples)\n\n",
                 ctx.deviceName.c_str(), o.settings.width, o.settings.height, kPerAxis, kSamples);
-    std::printf("| model | voxels | pv | geometric (exact) | pv / geometric | geometric voxels pv holds |\n");
-    std::printf("|---|---|---|---|---|---|\n");
+    emit("| model | voxels | pv | geometric (exact) | pv / geometric | geometric voxels pv holds |\n");
+    emit("|---|---|---|---|---|---|\n");
     for (const Model& m : measured) {
         const scene::Scene s = load(m.file);
         for (uint32_t n : measuredSizes) {
@@ -245,7 +291,7 @@ int runPvTables(const RenderOptions& options) {
             try {
                 row = measureAccuracy(ctx, s, o, n, kPerAxis, kSamples);
             } catch (const std::exception& e) {
-                std::printf("| %s | %u³ | not measured: %s ||||\n", m.name.c_str(), n, e.what());
+                emit("| %s | %u³ | not measured: %s ||||\n", m.name.c_str(), n, e.what());
                 out["table_6_2"].push_back({{"model", m.name}, {"voxels", n}, {"error", e.what()}});
                 continue;
             }
@@ -253,7 +299,7 @@ int runPvTables(const RenderOptions& options) {
             row["model"] = m.name;
             row["voxels"] = n;
             const double pv = row["pv"], geometric = row["geometric"], found = row["geometric_found_percent"];
-            std::printf("| %s | %u³ | %.3f | %.3f | %.2f | %.2f %% |\n", m.name.c_str(), n, pv, geometric,
+            emit("| %s | %u³ | %.3f | %.3f | %.2f | %.2f %% |\n", m.name.c_str(), n, pv, geometric,
                         pv / geometric, found);
             std::fflush(stdout);
             out["table_6_2"].push_back(row);
@@ -266,6 +312,10 @@ int runPvTables(const RenderOptions& options) {
     if (!f) throw image::IoError(o.benchOut + ": cannot open for writing");
     f << out.dump(2) << "\n";
     std::printf("\nwrote %s\n", o.benchOut.c_str());
+    if (!o.pvDoc.empty()) {
+        writeIntoDoc(o.pvDoc, g_markdown);
+        std::printf("wrote the tables into %s\n", o.pvDoc.c_str());
+    }
     if (ctx.validationErrors() > 0) {
         std::fprintf(stderr, "dvsgi: %u Vulkan validation error(s)\n", ctx.validationErrors());
         return 3;

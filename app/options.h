@@ -57,6 +57,7 @@ struct RenderOptions {
     bool benchQuick = false;      // Cornell box only, 32^3, 2 frames, 160x90
     bool benchTables = false;     // also the variants of the paper's Tables III and V
     bool pvTables = false;        // instead: the progressive-voxelization chapter's Tables 6.1 and 6.2
+    std::string pvDoc;            // --pv-tables also writes them into this markdown file, between its markers
 
     // What the command line said, for commands whose defaults depend on it
     // (the bench's image size) and for the record (the bench JSON).

@@ -229,6 +229,12 @@ std::vector<Setting> conesAndCommands() {
                    kBench},
                   FIELD(pvTables)),
              "on"),
+        with(text({"pv-doc", kBenchGroup, "FILE.md", "",
+                   "--pv-tables also writes its tables into FILE.md, replacing what lies between the lines "
+                   "'<!-- pv-tables: begin -->' and '<!-- pv-tables: end -->' (docs/pv.md has them)",
+                   kBench},
+                  FIELD(pvDoc), ".md"),
+             "docs/pv.md"),
 
         // dvsgi soak.
         with(integer({"soak-frames", kSoakGroup, "N", "", "frames in all", kSoak}, 1, 100000000, FIELD(soakFrames)),
