@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # One-shot check on a machine with a GPU: build, run `dvsgi bench
 # --bench-tables` at 1920x1080 for 128^3, 256^3 and 512^3 (compute voxelizer)
-# and the defaults with the geometry voxelizer, the test suite, and the 512x512
-# quality renders. Everything it writes goes under one folder: log.txt (what
+# and the defaults with the geometry voxelizer, `--pv-tables` at 128^3, the test
+# suite, and the 512x512 quality renders. Everything it writes goes under one folder: log.txt (what
 # ran, how long, pass/fail), bench*.json and bench*.md, tests-*.txt (each
 # suite's output), quality/ (EXRs and metrics).
 #
@@ -115,6 +115,14 @@ else
     > "$out/bench-geometry.md" 2> "$out/bench-geometry-stderr.txt"
   rc=$?
   log "bench (geometry voxelizer): exit $rc; $(grep -c ' done in ' "$out/bench-geometry-stderr.txt") measurements done"
+  [ $rc -eq 0 ] || status=1
+  # Progressive voxelization, the chapter's tables at 128^3 (docs/pv.md); a
+  # model the bundle lacks gets a row saying so.
+  log "bench: --pv-tables at 128^3"
+  timeout "${DVSGI_GPU_PV_TIMEOUT:-240}" "${runner[@]}" "$dvsgi" bench --pv-tables --shared "$shared" \
+    --bench-voxels 128 --bench-out "$out/bench-pv.json" > "$out/bench-pv.md" 2> "$out/bench-pv-stderr.txt"
+  rc=$?
+  log "bench (pv tables): exit $rc"
   [ $rc -eq 0 ] || status=1
 fi
 
