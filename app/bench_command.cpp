@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "bench_flicker.h"
 #include "bench_pv.h"
+#include "json_file.h"
 #include "render_command.h"
 #include "scene/load.h"
 #include "settings_table.h"
@@ -324,14 +325,6 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
         if (m->status == "failed") std::printf("\n%s %u^3 failed: %s\n", m->scene.c_str(), m->voxels, m->error.c_str());
 }
 
-void writeJson(const std::string& path, const nlohmann::json& j) {
-    const fs::path p(path);
-    if (p.has_parent_path()) fs::create_directories(p.parent_path());
-    std::ofstream f(path);
-    if (!f) throw image::IoError(path + ": cannot open for writing");
-    f << j.dump(2) << "\n";
-    if (!f) throw image::IoError(path + ": write failed");
-}
 
 }  // namespace
 
@@ -416,7 +409,7 @@ int runBench(const RenderOptions& options) {
         for (const Measurement& m : results) list.push_back(measurementJson(m, copyGbps));
         out["measurements"] = list;
         out["validation_errors"] = ctx.validationErrors();
-        writeJson(o.benchOut, out);
+        writeJsonFile(o.benchOut, out);
     };
     out["complete"] = false;
     std::vector<std::string> seenWarnings;

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/hausdorff.h"
+#include "json_file.h"
 #include "gpu/context.h"
 #include "image/image_io.h"
 #include "render/renderer.h"
@@ -315,11 +316,7 @@ int runPvTables(const RenderOptions& options) {
         }
     }
     out["validation_errors"] = ctx.validationErrors();
-    fs::create_directories(fs::path(o.benchOut).parent_path().empty() ? fs::path(".")
-                                                                     : fs::path(o.benchOut).parent_path());
-    std::ofstream f(o.benchOut);
-    if (!f) throw image::IoError(o.benchOut + ": cannot open for writing");
-    f << out.dump(2) << "\n";
+    writeJsonFile(o.benchOut, out);
     std::printf("\nwrote %s\n", o.benchOut.c_str());
     if (!o.pvDoc.empty()) {
         writeIntoDoc(o.pvDoc, g_markdown);

@@ -9,6 +9,7 @@
 
 #include "gpu/context.h"
 #include "image/image_io.h"
+#include "json_file.h"
 #include "progress.h"
 #include "render/renderer.h"
 #include "scene/load.h"
@@ -141,14 +142,6 @@ void writeAov(const std::string& path, const render::Renderer& renderer, image::
     image::writeExrLayers(path, surface.depth.width, surface.depth.height, layers, type);
 }
 
-void writeJson(const std::string& path, const nlohmann::json& j) {
-    std::filesystem::path p(path);
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-    std::ofstream f(path);
-    if (!f) throw image::IoError(path + ": cannot open for writing");
-    f << j.dump(2) << "\n";
-    if (!f) throw image::IoError(path + ": write failed");
-}
 
 }  // namespace
 
@@ -264,7 +257,7 @@ int runRender(const RenderOptions& o) {
         // (for example across voxel resolutions) without reading the EXR.
         j["output_mean_rgb"] = {outputMean.r, outputMean.g, outputMean.b};
         j["output_mean_luminance"] = 0.2126 * outputMean.r + 0.7152 * outputMean.g + 0.0722 * outputMean.b;
-        writeJson(o.metricsPath, j);
+        writeJsonFile(o.metricsPath, j);
     }
     if (!o.quiet) {
         printTable(stats, renderer.memory());

@@ -22,6 +22,7 @@
 #include "image/image_io.h"
 #include "progress.h"
 #include "render/renderer.h"
+#include "json_file.h"
 #include "render_command.h"
 #include "scene/scene.h"
 
@@ -180,15 +181,6 @@ nlohmann::json reportJson(const Report& r) {
             {"seconds", r.seconds}};
 }
 
-void writeJson(const std::string& path, const nlohmann::json& j) {
-    const std::filesystem::path p(path);
-    std::error_code ec;
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-    std::ofstream f(path);
-    if (!f) throw image::IoError("--soak-out: cannot open " + path + " for writing");
-    f << j.dump(2) << "\n";
-    if (!f) throw image::IoError("--soak-out: writing " + path + " failed");
-}
 
 }  // namespace
 
@@ -308,7 +300,7 @@ int runSoak(const RenderOptions& options) {
     j["max_growth_percent"] = limit;
     j["validation_errors"] = ctx.validationErrors();
     j["passed"] = !grew && ctx.validationErrors() == 0;
-    writeJson(options.soakOut, j);
+    writeJsonFile(options.soakOut, j, "--soak-out");
 
     if (!options.quiet)
         std::printf("soak: frames %u..%u (variant %u): RSS %s -> %s (%+.2f %%), device %s -> %s (%+.2f %%); wrote %s\n",

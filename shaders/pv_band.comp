@@ -29,22 +29,20 @@ layout(push_constant) uniform Push { PvBandPush pc; };
 
 #include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
+#include "lib/pv_project.glsl"
 
 void main() {
     ivec3 voxel = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(voxel, ivec3(grid.dims.x)))) return;
     vec3 c = grid.originSize.xyz + (vec3(voxel) + 0.5) * grid.originSize.w;
-    vec4 clip = frame.viewProj * vec4(c, 1.0);
-    if (clip.w <= 0.0) return;
-    vec3 ndc = clip.xyz / clip.w;
-    if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z < 0.0 || ndc.z > 1.0) return;
-    ivec2 size = ivec2(pc.sizes.xy);
-    ivec2 pixel = clamp(ivec2((ndc.xy * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
+    vec4 clip;
+    vec3 ndc;
+    if (!projectInView(frame.viewProj, c, clip, ndc)) return;
+    ivec2 pixel = ndcPixel(ndc.xy, ivec2(pc.sizes.xy));
     vec4 emission = texelFetch(emissionBuffer, pixel, 0);
     float depth = texelFetch(depthBuffer, pixel, 0).r;
     if (emission.a == 0.0 || depth >= 1.0) return;  // background: the cleanup frees what lies there
-    vec4 s = frame.invViewProj * vec4(ndc.xy, depth, 1.0);
-    if (distance(s.xyz / s.w, c) > pc.params.x) return;
+    if (distance(unprojectNdc(frame.invViewProj, ndc.xy, depth), c) > pc.params.x) return;
     vec3 base = texelFetch(baseBuffer, pixel, 0).rgb;
     vec3 n = texelFetch(normalBuffer, pixel, 0).xyz;
     accumulateFragment(voxel, VOXELIZE_STATIC, base, emission.rgb, n);

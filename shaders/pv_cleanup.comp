@@ -25,6 +25,7 @@ layout(push_constant) uniform Push { PvCleanupPush pc; };
 
 #include "lib/voxel_list_dispatch.glsl"
 #include "lib/voxel_index.glsl"
+#include "lib/pv_project.glsl"
 
 const uint KEEP = 0u, BAND = 1u, FREE = 2u;
 
@@ -37,10 +38,9 @@ const uint KEEP = 0u, BAND = 1u, FREE = 2u;
 // voxel whose centre lies just outside a silhouette it holds; here nine rays
 // spread over the voxel's projected footprint must all see past it.
 uint classify(PvDepthView view, vec3 c) {
-    vec4 clip = view.viewProj * vec4(c, 1.0);
-    if (clip.w <= 0.0) return KEEP;
-    vec3 ndc = clip.xyz / clip.w;
-    if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z < 0.0 || ndc.z > 1.0) return KEEP;
+    vec4 clip;
+    vec3 ndc;
+    if (!projectInView(view.viewProj, c, clip, ndc)) return KEEP;
     float b = pc.weights.z;
     // The footprint's half-extent in NDC: the largest shift of the centre's
     // projection along the grid axes, by the tolerance.
@@ -59,7 +59,7 @@ uint classify(PvDepthView view, vec3 c) {
         for (int i = -1; i <= 1; ++i) {
             vec2 q = ndc.xy + r * vec2(i, j);
             if (any(greaterThan(abs(q), vec2(1.0)))) continue;  // partly outside: cannot be proven empty
-            ivec2 pixel = clamp(ivec2((q * 0.5 + 0.5) * vec2(size)), ivec2(0), size - 1);
+            ivec2 pixel = ndcPixel(q, size);
             float recorded = camera ? texelFetch(cameraDepth, pixel, 0).r
                                     : texelFetch(shadowDepth, ivec3(pixel, int(view.params.x)), 0).r;
             // Cleared depth: nothing along this ray inside the view's range.
@@ -68,9 +68,7 @@ uint classify(PvDepthView view, vec3 c) {
                 continue;
             }
             // Distance along the ray from the voxel centre's depth to the surface.
-            vec4 s = view.invViewProj * vec4(q, recorded, 1.0);
-            vec4 o = view.invViewProj * vec4(q, ndc.z, 1.0);
-            float gap = distance(s.xyz / s.w, o.xyz / o.w);
+            float gap = distance(unprojectNdc(view.invViewProj, q, recorded), unprojectNdc(view.invViewProj, q, ndc.z));
             if (gap <= tolerance) return BAND;
             if (recorded > ndc.z) ++freed;
         }

@@ -28,10 +28,9 @@ layout(push_constant) uniform Push { PvInjectPush pc; };
 #include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
 
-vec3 unproject(vec2 ndc, float depth) {
-    vec4 p = frame.invViewProj * vec4(ndc, depth, 1.0);
-    return p.xyz / p.w;
-}
+#include "lib/pv_project.glsl"
+
+vec3 unproject(vec2 ndc, float depth) { return unprojectNdc(frame.invViewProj, ndc, depth); }
 
 // Whether axis `a` separates the quad q (voxel units, relative to a voxel's
 // centre) from that voxel, grown like the geometric voxelizers' boxes.

@@ -147,12 +147,7 @@ void Renderer::uploadLights() {
         temporalState_.drop(lightSettleFrames());
     }
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
-    shadowViewProj_.clear();
-    shadowViewParams_.clear();
-    for (const sh::GpuShadowView& v : setup.views) {
-        shadowViewProj_.push_back(v.viewProj);
-        shadowViewParams_.push_back(v.params);
-    }
+    shadowViews_ = setup.views;
     if (lights_ && uint32_t(setup.lights.size()) == lightCount_ && uint32_t(setup.views.size()) == viewCount_) {
         if (lightBytes) gpu::uploadBuffer(ctx_, *lights_, setup.lights.data(), lightBytes);
         if (viewBytes) gpu::uploadBuffer(ctx_, *views_, setup.views.data(), viewBytes);

@@ -19,6 +19,7 @@
 #include "render/voxel_view.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
+#include "shared/scene_data.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_light_settings.h"
 #include "vxgi/pv_voxelize.h"
@@ -196,8 +197,7 @@ private:
     std::unique_ptr<vxgi::PvVoxelizer> pv_;
     std::unique_ptr<gpu::Buffer> pvViews_;
     uint32_t pvViewCount_ = 0;
-    std::vector<glm::mat4> shadowViewProj_;  // the uploaded shadow views' matrices
-    std::vector<glm::vec4> shadowViewParams_;
+    std::vector<shader::GpuShadowView> shadowViews_;  // host copy of the uploaded shadow views
     // Extra G-buffers for pv, each rendered with its own FrameConstants:
     // reflective shadow maps, one per shadow view (settings.pv.rsm), and six
     // views around the camera (settings.pv.views).

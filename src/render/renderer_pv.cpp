@@ -27,10 +27,10 @@ void Renderer::uploadPvViews() {
     std::vector<sh::PvDepthView> views;
     const glm::mat4 camera = viewProjection();
     views.push_back({camera, glm::inverse(camera), glm::vec4(sh::PV_CAMERA_LAYER, 0.0f, 0.0f, 0.0f)});
-    for (size_t i = 0; i < shadowViewProj_.size(); ++i) {
-        const glm::vec4& p = shadowViewParams_[i];
+    for (size_t i = 0; i < shadowViews_.size(); ++i) {
+        const glm::vec4& p = shadowViews_[i].params;
         const bool perspective = p.y > 0.5f;
-        views.push_back({shadowViewProj_[i], glm::inverse(shadowViewProj_[i]),
+        views.push_back({shadowViews_[i].viewProj, glm::inverse(shadowViews_[i].viewProj),
                          glm::vec4(float(i), perspective ? 0.0f : kShadowTexels * p.x,
                                    perspective ? kShadowTexels * p.x : 0.0f, 0.0f)});
     }
@@ -50,7 +50,7 @@ void Renderer::uploadPvViews() {
     const glm::mat4 flipY = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, -1.0f, 1.0f));
     std::vector<glm::mat4> lights;
     if (settings_.pv.rsm)
-        for (const glm::mat4& m : shadowViewProj_) lights.push_back(flipY * m);
+        for (const sh::GpuShadowView& v : shadowViews_) lights.push_back(flipY * v.viewProj);
     setPvViews(rsm_, lights, settings_.pv.rsm);
     // Six 90-degree views around the camera, to find what it does not face.
     std::vector<glm::mat4> around;

@@ -109,10 +109,7 @@ void PvVoxelizer::cleanup(VkCommandBuffer cmd, gpu::Tracker& tracker, VoxelVolum
     const VkClearColorValue zero{};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, v.accum.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-    sh::VoxelListHeader header{};
-    header.counts.z = v.slots;
-    header.allGroups.z = header.dynamicGroups.z = 1;
-    vkCmdUpdateBuffer(cmd, v.list.handle(), 0, sizeof(header), &header);
+    recordEmptyList(cmd, v.list, v.slots);
 
     tracker.image(v.accum, gpu::use::ComputeWrite)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)

@@ -149,10 +149,7 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
     // Everything starts zeroed and stays in GENERAL from here on; the list
     // starts empty with its capacity written once.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        sh::VoxelListHeader header{};
-        header.counts.z = slots;
-        header.allGroups.z = header.dynamicGroups.z = 1;
-        vkCmdUpdateBuffer(cmd, list.handle(), 0, sizeof(header), &header);
+        recordEmptyList(cmd, list, slots);
         vkCmdFillBuffer(cmd, index.handle(), 0, VK_WHOLE_SIZE, 0);
         gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,

@@ -28,6 +28,13 @@ uint32_t voxelListMaxGroups(uint32_t slots) {
     return uint32_t(groups + sh::VOXEL_LIST_ROW);  // the last row may be partly past the end
 }
 
+void recordEmptyList(VkCommandBuffer cmd, const gpu::Buffer& list, uint32_t slots) {
+    sh::VoxelListHeader header{};
+    header.counts.z = slots;
+    header.allGroups.z = header.dynamicGroups.z = 1;
+    vkCmdUpdateBuffer(cmd, list.handle(), 0, sizeof(header), &header);
+}
+
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset) {
     vkCmdDispatchIndirect(cmd, list.handle(), argsOffset);
 }

@@ -40,6 +40,9 @@ private:
     gpu::Pipeline pipeline_;
 };
 
+// Records the header of an empty list of `slots` slots into `list` (new
+// volumes; the progressive voxelizer's new list each frame).
+void recordEmptyList(VkCommandBuffer cmd, const gpu::Buffer& list, uint32_t slots);
 // Recorded by each pass that runs over list entries: the indirect dispatch
 // whose arguments sit at `argsOffset` in the list buffer.
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset);
