@@ -216,7 +216,24 @@ int runRender(const RenderOptions& o) {
     for (const std::string& w : renderer.warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
     const bool moving = o.frames > 1 || !scene.animations.empty() || path;
     if (path) renderer.setCameraPath(std::move(path));
-    if (!o.quiet && renderer.volumes()) printVoxelGrid(*renderer.volumes(), *renderer.voxelizer());
+    if (!o.quiet && renderer.volumes()) {
+        printVoxelGrid(*renderer.volumes(), *renderer.voxelizer());
+        const std::vector<const vxgi::VoxelVolumes*> levels = renderer.levelVolumes();
+        if (o.settings.clipmap.levels > 0)
+            std::printf("voxel clipmap: %zu levels of %u^3 following the camera (the grid above is level 0's, its "
+                        "window placed each frame), voxels %.5f m to %.5f m, windows %.3f m to %.3f m wide, "
+                        "%.1f MiB of voxel data in all\n",
+                        levels.size(), levels[0]->grid.n, levels.front()->grid.voxelSize,
+                        levels.back()->grid.voxelSize, levels.front()->grid.voxelSize * float(levels[0]->grid.n),
+                        levels.back()->grid.voxelSize * float(levels[0]->grid.n),
+                        [&] {
+                            double bytes = 0.0;
+                            for (const vxgi::VoxelVolumes* v : levels)
+                                for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(v->grid.n, v->slots))
+                                    bytes += double(m.bytes);
+                            return bytes / 1048576.0;
+                        }());
+    }
     const uint32_t slots = renderer.volumes() ? renderer.volumes()->slots : 0;
 
     const bool eachFrame = o.outExr.find('#') != std::string::npos;

@@ -229,6 +229,20 @@ std::vector<Setting> imageAndVoxels() {
                      32, 512, FIELD(settings.voxels), true, true),
              "64"),
         voxelBox(),
+        with(integer({"clipmap", kVoxels, "L", "levels",
+                      "camera-following voxel clipmap: L levels of N^3 voxels (--voxels), each twice the voxel of "
+                      "the one before, centred on the camera; a move voxelizes again only the slabs it exposes "
+                      "(toroidal storage) and cones trace across the levels; 0 = one grid fitted to the scene "
+                      "(docs/clipmap.md)",
+                      kAll, kNew},
+                     1, 8, FIELD(settings.clipmap.levels), false, true),
+             "4"),
+        with(number({"clipmap-voxel", kVoxels, "S", "m",
+                     "--clipmap: the voxel edge of the finest level; 0 = the coarsest level spans twice the scene's "
+                     "longest side",
+                     kAll, kNew},
+                    0.0, 1000.0, FIELD(settings.clipmap.voxelSize)),
+             "0.05", "a length in 0..1000 m"),
         with(choice({"conservative", kVoxels, "auto|gs", "",
                      "conservative rasterization for voxelization: hardware (VK_EXT_conservative_rasterization) "
                      "when the device has it, else geometry-shader dilation; gs = always dilate",

@@ -1,6 +1,6 @@
 # Compiles GLSL with glslc at build time into C++ headers holding the SPIR-V words
 # (glslc -mfmt=num), so the binary embeds its shaders and no .spv is ever committed.
-#   dvsgi_add_shaders(TARGET name SOURCES a.comp b.vert ...)
+#   dvsgi_add_shaders(TARGET name SOURCES a.comp b.vert a.comp@VARIANT ...)
 # creates an INTERFACE library `name` whose include directory holds
 # shaders/<file>.<stage>.inc for every source (e.g. shaders/lighting.comp.inc).
 # Extra definitions for every shader, for diagnostics only (scripts/cone-check.sh
@@ -16,14 +16,27 @@ function(dvsgi_add_shaders)
   set(out_dir ${CMAKE_CURRENT_BINARY_DIR}/include/shaders)
   file(MAKE_DIRECTORY ${out_dir})
   set(outputs)
-  foreach(src ${ARG_SOURCES})
-    get_filename_component(name ${src} NAME)
+  foreach(entry ${ARG_SOURCES})
+    # "file.comp@VARIANT": file.comp again, with DVSGI_VARIANT defined, as file_variant.comp.inc.
+    set(variant_defines)
+    if(entry MATCHES "^(.+)@(.+)$")
+      set(src ${CMAKE_MATCH_1})
+      set(variant ${CMAKE_MATCH_2})
+      string(TOLOWER ${variant} suffix)
+      get_filename_component(base ${src} NAME_WE)
+      get_filename_component(ext ${src} EXT)
+      set(name ${base}_${suffix}${ext})
+      set(variant_defines -DDVSGI_${variant})
+    else()
+      set(src ${entry})
+      get_filename_component(name ${src} NAME)
+    endif()
     set(abs ${CMAKE_CURRENT_SOURCE_DIR}/${src})
     set(out ${out_dir}/${name}.inc)
     set(dep ${CMAKE_CURRENT_BINARY_DIR}/${name}.d)
     add_custom_command(
       OUTPUT ${out}
-      COMMAND ${GLSLC} --target-env=vulkan1.3 -O -g ${defines} -I ${CMAKE_CURRENT_SOURCE_DIR}
+      COMMAND ${GLSLC} --target-env=vulkan1.3 -O -g ${defines} ${variant_defines} -I ${CMAKE_CURRENT_SOURCE_DIR}
               -MD -MF ${dep} -mfmt=num -o ${out} ${abs}
       DEPENDS ${abs}
       DEPFILE ${dep}

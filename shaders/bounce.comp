@@ -13,8 +13,16 @@
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
+#ifdef DVSGI_CLIPMAP
+// One clipmap level's voxels; cones trace every level from theirs up.
+layout(set = 0, binding = BIND_BOUNCE_GRID) uniform Grid { VoxelGrid grid; };
+layout(set = 0, binding = BIND_CONE_GRID) uniform Levels { ConeLevels clip; };
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalLevels[MAX_CLIP_LEVELS];
+#define CONE_FIRST_LEVEL int(pc.flags.y)
+#else
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional;
+#endif
 layout(set = 0, binding = BIND_BOUNCE_ACCUM, r32f) uniform readonly image3D accum;
 layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D direct;
 layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
@@ -24,6 +32,7 @@ layout(push_constant) uniform Push { BouncePush pc; };
 
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
+#include "lib/voxel_window.glsl"
 #include "lib/cone_trace.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 
@@ -52,8 +61,8 @@ vec4 bounced(ivec3 v, uint slot) {
 void main() {
     uint entry = listInvocation();
     vec2 change = vec2(0.0);
-    if (entry < list.header.counts.x) {
-        ivec3 v = unpackVoxel(list.entries[entry]);
+    if (entry < list.header.counts.x && list.entries[entry] != VOXEL_LIST_FREE) {
+        ivec3 v = listVoxel(list.entries[entry]);
         vec4 r = bounced(v, entry);
         if (pc.flags.x != 0u && r.a > 0.0) {
             float before = luminance(imageLoad(outRadiance, v).rgb), after = luminance(r.rgb);

@@ -27,8 +27,8 @@ layout(push_constant) uniform Push { ClearListedPush pc; };
 void main() {
     uint first = pc.scope.x == CLEAR_LISTED_ALL ? 0u : list.header.counts.y;
     uint i = first + listInvocation();
-    if (i >= list.header.counts.x) return;
-    ivec3 v = unpackVoxel(list.entries[i]);
+    if (i >= list.header.counts.x || list.entries[i] == VOXEL_LIST_FREE) return;
+    ivec3 v = listVoxel(list.entries[i]);
     for (uint c = 0u; c < VOXEL_CHANNELS; ++c) imageStore(accum, slotTexel(i, c), vec4(0.0));
     imageStore(direct, slotTexel(i, 0u), vec4(0.0));
     imageStore(radiance, v, vec4(0.0));

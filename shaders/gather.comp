@@ -12,9 +12,18 @@
 #define CONE_USE_RADIANCE_VOLUME
 layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;
 
+#ifdef DVSGI_CLIPMAP
+// The level a pixel's cones start at (clipSurfaceLevel), set per pixel.
+int coneFirst = 0;
+#define CONE_FIRST_LEVEL coneFirst
+layout(set = 0, binding = BIND_CONE_GRID) uniform Levels { ConeLevels clip; };
+layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceLevels[MAX_CLIP_LEVELS];
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalLevels[MAX_CLIP_LEVELS];
+#else
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceVolume;
 layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directional;
+#endif
 layout(set = 0, binding = BIND_GATHER_FRAME) uniform Frame { FrameConstants frame; };
 layout(set = 0, binding = BIND_GATHER_BASE) uniform sampler2D gBase;
 layout(set = 0, binding = BIND_GATHER_NORMAL) uniform sampler2D gNormal;
@@ -31,6 +40,28 @@ layout(push_constant) uniform Push { GatherPush pc; };
 // GGX alpha), clamped below by the minimum aperture.
 float specularTanHalf(float roughness) {
     return max(roughness * roughness, pc.params.w);
+}
+
+// Indirect diffuse (rgb, a = 1 - occlusion) and specular at surface point P.
+void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, out vec4 diffuseOut, out vec3 specular) {
+    float metallic = base.a;
+    // Offset along the normal so the surface does not sample its own voxels.
+    float originHeight = pc.cone.surface.z * traceGrid(CONE_FIRST_LEVEL).originSize.w;
+    vec3 origin = P + N * originHeight;
+
+    float occlusion;
+    vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
+                                       : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
+    diffuseOut = vec4(base.rgb / PI * E * (1.0 - metallic), 1.0 - occlusion);
+
+    specular = vec3(0.0);
+    if (pc.flags.y != 0u && isGlossy(metallic, roughness)) {
+        vec3 R = reflect(-V, N);
+        vec4 c = traceCone(origin, N, originHeight, R, specularTanHalf(roughness), pc.cone, true);
+        vec3 F0 = mix(vec3(0.04), base.rgb, metallic);
+        float NoV = max(dot(N, V), 0.0);
+        specular = (F0 + (1.0 - F0) * pow(1.0 - NoV, 5.0)) * c.rgb;
+    }
 }
 
 void main() {
@@ -51,24 +82,27 @@ void main() {
     vec4 nr = texelFetch(gNormal, g, 0);
     vec3 N = normalize(nr.xyz);
     vec3 V = normalize(frame.cameraPos.xyz - P);
-    float metallic = base.a, roughness = nr.w;
-    // Offset along the normal so the surface does not sample its own voxels.
-    float originHeight = pc.cone.surface.z * grid.originSize.w;
-    vec3 origin = P + N * originHeight;
-
-    float occlusion;
-    vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
-                                       : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
-    vec3 diffuse = base.rgb / PI * E * (1.0 - metallic);
-    imageStore(outDiffuse, px, vec4(diffuse, 1.0 - occlusion));
-
-    vec3 specular = vec3(0.0);
-    if (pc.flags.y != 0u && isGlossy(metallic, roughness)) {
-        vec3 R = reflect(-V, N);
-        vec4 c = traceCone(origin, N, originHeight, R, specularTanHalf(roughness), pc.cone, true);
-        vec3 F0 = mix(vec3(0.04), base.rgb, metallic);
-        float NoV = max(dot(N, V), 0.0);
-        specular = (F0 + (1.0 - F0) * pow(1.0 - NoV, 5.0)) * c.rgb;
+#ifdef DVSGI_CLIPMAP
+    // Near the face of the level the pixel starts at, the next level's
+    // gather is blended in, so the start level changes without a seam.
+    float blend;
+    coneFirst = clipSurfaceLevel(P, blend);
+    vec4 diffuse;
+    vec3 specular;
+    gatherAt(P, N, V, base, nr.w, diffuse, specular);
+    if (blend > 0.0) {
+        vec4 d1;
+        vec3 s1;
+        coneFirst += 1;
+        gatherAt(P, N, V, base, nr.w, d1, s1);
+        diffuse = mix(diffuse, d1, blend);
+        specular = mix(specular, s1, blend);
     }
+#else
+    vec4 diffuse;
+    vec3 specular;
+    gatherAt(P, N, V, base, nr.w, diffuse, specular);
+#endif
+    imageStore(outDiffuse, px, diffuse);
     imageStore(outSpecular, px, vec4(specular, 1.0));
 }

@@ -36,8 +36,8 @@ layout(push_constant) uniform Push { VoxelLightPush pc; };
 
 void main() {
     uint entry = listInvocation();
-    if (entry >= list.header.counts.x) return;
-    ivec3 v = unpackVoxel(list.entries[entry]);
+    if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
+    ivec3 v = listVoxel(list.entries[entry]);
     uint slot = entry;
     vec3 albedo = voxelAlbedo(slot);
     vec3 pos, neg;

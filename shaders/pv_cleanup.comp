@@ -79,7 +79,7 @@ void main() {
     uint i = listInvocation();
     if (i >= oldList.header.counts.x) return;
     uint entry = oldList.entries[i];
-    ivec3 v = unpackVoxel(entry);
+    ivec3 v = listVoxel(entry);
     vec3 c = grid.originSize.xyz + (vec3(v) + 0.5) * grid.originSize.w;
     // The camera's G-buffer is exact and refills what it sees, so its band
     // wins over a shadow map's (whose slope bias can put a lit surface

@@ -25,6 +25,6 @@ void main() {
     list.header.counts.x = count;
     if (mode == LIST_FINISH_STATIC) list.header.counts.y = count;
     uint statics = min(list.header.counts.y, count);
-    list.header.allGroups = voxelListDispatch(count);
+    list.header.allGroups.xyz = voxelListDispatch(count).xyz;  // w counts freed entries
     list.header.dynamicGroups = voxelListDispatch(count - statics);
 }

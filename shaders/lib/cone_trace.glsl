@@ -2,8 +2,41 @@
 // and the per-pixel gather. Needs `grid` (VoxelGrid) and `directional`
 // (sampler3D: the six volumes' atlas, shared/voxel_data.h); with CONE_USE_RADIANCE_VOLUME also
 // `radianceVolume` (sampler3D), blended in for cone diameters of 1-2 voxels.
+// With DVSGI_CLIPMAP it traces clipmap levels instead (vxgi/clipmap.h):
+// `clip` (ConeLevels), `directionalLevels` and `radianceLevels` (arrays of
+// MAX_CLIP_LEVELS), starting at level CONE_FIRST_LEVEL (default 0).
 
 #include "lib/math.glsl"
+
+#ifdef DVSGI_CLIPMAP
+#ifndef CONE_FIRST_LEVEL
+#define CONE_FIRST_LEVEL 0
+#endif
+VoxelGrid traceGrid(int l) { return clip.level[l]; }
+// One sampler per case: lavapipe has no non-uniform sampler indexing.
+#define CLIP_LEVEL_SWITCH(ARRAY, uvw, lod)                \
+    switch (l) {                                          \
+    case 0: return textureLod(ARRAY[0], uvw, lod);        \
+    case 1: return textureLod(ARRAY[1], uvw, lod);        \
+    case 2: return textureLod(ARRAY[2], uvw, lod);        \
+    case 3: return textureLod(ARRAY[3], uvw, lod);        \
+    case 4: return textureLod(ARRAY[4], uvw, lod);        \
+    case 5: return textureLod(ARRAY[5], uvw, lod);        \
+    case 6: return textureLod(ARRAY[6], uvw, lod);        \
+    default: return textureLod(ARRAY[7], uvw, lod);       \
+    }
+vec4 directionalAt(int l, vec3 uvw, float lod) { CLIP_LEVEL_SWITCH(directionalLevels, uvw, lod) }
+#ifdef CONE_USE_RADIANCE_VOLUME
+vec4 radianceAt(int l, vec3 uvw) { CLIP_LEVEL_SWITCH(radianceLevels, uvw, 0.0) }
+#endif
+#else
+#define CONE_FIRST_LEVEL 0
+VoxelGrid traceGrid(int l) { return grid; }
+vec4 directionalAt(int l, vec3 uvw, float lod) { return textureLod(directional, uvw, lod); }
+#ifdef CONE_USE_RADIANCE_VOLUME
+vec4 radianceAt(int l, vec3 uvw) { return textureLod(radianceVolume, uvw, 0.0); }
+#endif
+#endif
 
 // One directional volume's contribution at (whole) mip level `lod`, weighted
 // by w: optical depth tau and emission tau * L (L = colour / alpha). Across
@@ -27,11 +60,11 @@ const float DEPTH_RAMP = 0.5;
 // image with the sampler's transparent border: x stays inside the volume (the
 // filter never reaches into the neighbouring one), and within half a cell of
 // its edge the result fades toward the empty border as the filter would have.
-vec4 fetchVolume(uint face, vec3 uvw, float size, float lod) {
+vec4 fetchVolume(int l, uint face, vec3 uvw, float size, float lod) {
     float x = uvw.x * size;
     float inside = clamp(min(x + 0.5, size + 0.5 - x), 0.0, 1.0);
     uvw.x = (float(face) * size + clamp(x, 0.5, size - 0.5)) / (size * float(DIRECTIONAL_VOLUMES));
-    return inside * textureLod(directional, uvw, lod);
+    return inside * directionalAt(l, uvw, lod);
 }
 
 // The two cells around uvw along `axis` (of a volume with `size` cells per
@@ -62,13 +95,13 @@ vec4 premultiplied(vec4 acc) {
     return vec4(acc.rgb * (a / acc.a), a);
 }
 
-void tapDirectional(uint face, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
+void tapDirectional(int l, uint face, int axis, vec3 uvw, float lod, float w, inout vec4 acc) {
     // Cells per edge at this level, from the grid rather than textureSize:
     // lavapipe answers a size query with one lane's level for all lanes.
-    float size = max(float(grid.dims.x / 2u) * exp2(-lod), 1.0);
+    float size = max(float(traceGrid(l).dims.x / 2u) * exp2(-lod), 1.0);
     vec3 p0, p1;
     float f = cellsAlongAxis(uvw, axis, size, p0, p1);
-    addOpticalDepth(fetchVolume(face, p0, size, lod), fetchVolume(face, p1, size, lod), f, w, acc);
+    addOpticalDepth(fetchVolume(l, face, p0, size, lod), fetchVolume(l, face, p1, size, lod), f, w, acc);
 }
 
 #ifdef CONE_USE_RADIANCE_VOLUME
@@ -77,13 +110,13 @@ void tapDirectional(uint face, int axis, vec3 uvw, float lod, float w, inout vec
 // trilinear opacity across a one-voxel surface is a tent whose step-corrected
 // transmittance is about 0.1, so narrow shadow cones saw through single-layer
 // occluders (umbra 0.10 instead of 0).
-vec4 sampleRadianceVolume(vec3 uvw, vec3 dir) {
+vec4 sampleRadianceVolume(int l, vec3 uvw, vec3 dir) {
     vec3 a = abs(dir);
     int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
     vec3 p0, p1;
-    float f = cellsAlongAxis(uvw, axis, float(grid.dims.x), p0, p1);
+    float f = cellsAlongAxis(uvw, axis, float(traceGrid(l).dims.x), p0, p1);
     vec4 acc = vec4(0.0);
-    addOpticalDepth(textureLod(radianceVolume, p0, 0.0), textureLod(radianceVolume, p1, 0.0), f, 1.0, acc);
+    addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);
     return premultiplied(acc);
 }
 #endif
@@ -94,12 +127,12 @@ vec4 sampleRadianceVolume(vec3 uvw, vec3 dir) {
 // index into the atlas (the -axis volume, or the next one for dir >= 0), so
 // only the three facing volumes are fetched, with no branch (llvmpipe runs
 // divergent branches both ways).
-vec4 sampleFacing(vec3 uvw, vec3 dir, vec3 w, float lod) {
+vec4 sampleFacing(int l, vec3 uvw, vec3 dir, vec3 w, float lod) {
     vec4 acc = vec4(0.0);
     uvec3 face = uvec3(0u, 2u, 4u) + uvec3(greaterThanEqual(dir, vec3(0.0)));
-    tapDirectional(face.x, 0, uvw, lod, w.x, acc);
-    tapDirectional(face.y, 1, uvw, lod, w.y, acc);
-    tapDirectional(face.z, 2, uvw, lod, w.z, acc);
+    tapDirectional(l, face.x, 0, uvw, lod, w.x, acc);
+    tapDirectional(l, face.y, 1, uvw, lod, w.y, acc);
+    tapDirectional(l, face.z, 2, uvw, lod, w.z, acc);
     return premultiplied(acc);
 }
 
@@ -116,13 +149,80 @@ vec4 sampleFacing(vec3 uvw, vec3 dir, vec3 w, float lod) {
 // sharp as a glossy one); without, the level is rounded, at half the cost: a
 // diffuse cone's level depends only on its distance, so rounding changes no
 // pixel against its neighbours (blending cost the voxel bounce 3x on lavapipe).
-vec4 sampleDirectional(vec3 uvw, vec3 dir, float level, bool blendLevels) {
+vec4 sampleDirectional(int l, vec3 uvw, vec3 dir, float level, bool blendLevels) {
     vec3 w = dir * dir;
-    if (!blendLevels) return sampleFacing(uvw, dir, w, floor(level + 0.5));
+    if (!blendLevels) return sampleFacing(l, uvw, dir, w, floor(level + 0.5));
     float lod = floor(level), fr = level - lod;
-    vec4 s = sampleFacing(uvw, dir, w, lod);
-    return fr > 0.0 ? mix(s, sampleFacing(uvw, dir, w, lod + 1.0), fr) : s;
+    vec4 s = sampleFacing(l, uvw, dir, w, lod);
+    return fr > 0.0 ? mix(s, sampleFacing(l, uvw, dir, w, lod + 1.0), fr) : s;
 }
+
+#ifdef DVSGI_CLIPMAP
+// Voxels of a level next to its window's face over which the next level is
+// blended in, so a cone (or a row of pixels) crossing the border sees no jump.
+const float CLIP_BLEND_VOXELS = 4.0;
+
+// The level a sample of footprint d (world) at p reads: the finest from
+// `first` up whose voxels are no smaller than d / 4 (each level reads its
+// radiance volume and directional mips 0-1, cells of 1-4 of its voxels; mip
+// 2 would be the next level's mip 1) and whose window holds p at least a
+// footprint from its faces (the coarsest: anywhere inside). `blend` is the
+// weight of level l + 1 near l's faces. False: p is outside every window.
+bool clipLevelAt(vec3 p, float d, int first, out int l, out float blend) {
+    int levels = int(clip.count.x);
+    l = clamp(int(floor(log2(d / traceGrid(0).originSize.w))) - 1, first, levels - 1);
+    blend = 0.0;
+    for (; l < levels; ++l) {
+        VoxelGrid g = traceGrid(l);
+        vec3 v = (p - g.originSize.xyz) / g.originSize.w;
+        float n = float(g.dims.x);
+        float edge = min(min(min(v.x, v.y), v.z), n - max(max(v.x, v.y), v.z));
+        if (l == levels - 1) return edge >= 0.0;
+        float margin = edge - max(d / g.originSize.w, 1.0);
+        if (margin >= 0.0) {
+            blend = clamp(1.0 - margin / CLIP_BLEND_VOXELS, 0.0, 1.0);
+            return true;
+        }
+    }
+    return false;
+}
+
+// Voxels a surface point keeps from the faces of the level its cones start at.
+const float CLIP_SURFACE_MARGIN = 2.0;
+
+// The level a surface point's cones start at: the finest whose window holds
+// p CLIP_SURFACE_MARGIN of its voxels inside (offsets and clearance are then
+// in its voxels, as a fitted grid of that voxel would have them; starting in a
+// finer level that does not hold the surface would sample its own coarse voxel).
+// Within CLIP_BLEND_VOXELS of that margin, `blend` weighs the next level's start.
+int clipSurfaceLevel(vec3 p, out float blend) {
+    int levels = int(clip.count.x);
+    blend = 0.0;
+    for (int l = 0; l < levels - 1; ++l) {
+        VoxelGrid g = traceGrid(l);
+        vec3 v = (p - g.originSize.xyz) / g.originSize.w;
+        float edge = min(min(min(v.x, v.y), v.z), float(g.dims.x) - max(max(v.x, v.y), v.z));
+        float margin = edge - CLIP_SURFACE_MARGIN;
+        if (margin >= 0.0) {
+            blend = clamp(1.0 - margin / CLIP_BLEND_VOXELS, 0.0, 1.0);
+            return l;
+        }
+    }
+    return levels - 1;
+}
+
+// The sample of footprint d at p from level l, as the fitted grid samples.
+vec4 sampleLevel(int l, vec3 p, vec3 dir, float d, bool blendLevels) {
+    VoxelGrid g = traceGrid(l);
+    float level = log2(d / g.originSize.w);
+    vec3 uvw = (p - g.originSize.xyz) / (g.originSize.w * float(g.dims.x));
+    vec4 smp = sampleDirectional(l, uvw, dir, clamp(level - 1.0, 0.0, float(g.dims.z) - 1.0), blendLevels);
+#ifdef CONE_USE_RADIANCE_VOLUME
+    if (level < 1.0) smp = mix(sampleRadianceVolume(l, uvw, dir), smp, max(level, 0.0));
+#endif
+    return smp;
+}
+#endif
 
 // Front-to-back accumulation along the cone from `origin` (world) along unit
 // `dir`, half-angle tangent `tanHalf`; `origin` lies `originHeight` (world)
@@ -135,9 +235,14 @@ vec4 sampleDirectional(vec3 uvw, vec3 dir, float level, bool blendLevels) {
 // `blendLevels`: see sampleDirectional (the diffuse cone sets pass false).
 vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHalf, ConeParams params, float aoLambda,
                  bool blendLevels, out float ao) {
+#ifdef DVSGI_CLIPMAP
+    // Distances, steps and the clearance are in voxels of the first level.
+    float s = traceGrid(CONE_FIRST_LEVEL).originSize.w;
+#else
     float s = grid.originSize.w;
     float extent = s * float(grid.dims.x);
     float maxLevel = float(grid.dims.z) - 1.0;
+#endif
     vec4 acc = vec4(0.0);
     ao = 0.0;
     float t = params.trace.w * s;
@@ -161,6 +266,14 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
             float hs = originHeight + t * dot(dir, n);
             d = clamp((hs - params.surface.y * s) / params.surface.x, finest, d);
         }
+#ifdef DVSGI_CLIPMAP
+        vec3 p = origin + dir * t;
+        int l;
+        float blend;
+        if (!clipLevelAt(p, d, CONE_FIRST_LEVEL, l, blend)) break;  // outside every level
+        vec4 smp = sampleLevel(l, p, dir, d, blendLevels);
+        if (blend > 0.0) smp = mix(smp, sampleLevel(l + 1, p, dir, d, blendLevels), blend);
+#else
         float level = log2(d / s);
         vec3 uvw = (origin + dir * t - grid.originSize.xyz) / extent;
         // Outside the grid there is nothing: the cone ends there. (A last
@@ -169,9 +282,10 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         // cornell-lights converged 22 % too bright; docs/quality.md.)
         if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
         // Directional level 0 voxels are two voxels wide.
-        vec4 smp = sampleDirectional(uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels);
+        vec4 smp = sampleDirectional(0, uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels);
 #ifdef CONE_USE_RADIANCE_VOLUME
-        if (level < 1.0) smp = mix(sampleRadianceVolume(uvw, dir), smp, level);
+        if (level < 1.0) smp = mix(sampleRadianceVolume(0, uvw, dir), smp, level);
+#endif
 #endif
         // Steps follow the cone's diameter but never exceed the sampled cell,
         // so a clamped (finer) footprint does not step over a thin wall.

@@ -25,7 +25,7 @@ uint claimVoxel(ivec3 voxel, uint mode) {
         if (value == 0u) {
             uint slot = atomicAdd(list.header.counts.x, 1u);
             if (slot < list.header.counts.z) {
-                list.entries[slot] = packVoxel(voxel);
+                list.entries[slot] = packVoxel(storageVoxel(voxel));
                 value = slot + 1u;
             } else {
                 atomicAdd(list.header.counts.w, 1u);
@@ -52,10 +52,12 @@ void accumulateChannel(uint slot, uint channel, float value) {
 
 // Static voxelization claims voxels as static; dynamic voxelization leaves
 // static voxels alone (they are cleared only when static geometry changes).
+// After a clipmap scroll, static voxelization writes only the exposed slabs.
 // Returns false when the fragment was skipped (a static voxel under dynamic
 // voxelization, or no slot left: counted for the host, which grows the
 // storage and voxelizes again).
 bool accumulateFragment(ivec3 voxel, uint mode, vec3 albedo, vec3 emission, vec3 n) {
+    if (mode != VOXELIZE_DYNAMIC && keptByScroll(voxel)) return false;
     uint value = claimVoxel(voxel, mode);
     if (mode == VOXELIZE_DYNAMIC && (value & VOXEL_INDEX_STATIC) != 0u) return false;
     uint slot1 = indexSlot(value);

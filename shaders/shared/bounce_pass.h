@@ -11,7 +11,7 @@ DVSGI_BEGIN
 
 struct BouncePush {
     ConeParams cone;
-    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS)
+    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS), y (clipmap) the voxels' level
 };
 DVSGI_CHECK_SIZE(BouncePush, 48);
 
@@ -26,6 +26,7 @@ DVSGI_CONST(uint, BIND_BOUNCE_DIRECT, 4);     // direct light + emission (storag
 DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, read for the change, then written)
 DVSGI_CONST(uint, BIND_BOUNCE_STATS, 6);      // float[BOUNCE_STATS_FLOATS] per workgroup
 DVSGI_CONST(uint, BIND_BOUNCE_LIST, 7);       // occupied-voxel list: one invocation per entry
+DVSGI_CONST(uint, BIND_BOUNCE_GRID, 8);       // clipmap: the bounced level's own grid (BIND_CONE_GRID holds all levels)
 
 DVSGI_END
 

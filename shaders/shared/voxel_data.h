@@ -68,8 +68,27 @@ DVSGI_FUNCTION ivec3 directionalTexel(uint d, ivec3 p, int size) { return ivec3(
 struct VoxelGrid {
     vec4 originSize;  // xyz world position of the grid's minimum corner, w voxel edge (m)
     uvec4 dims;       // x N (voxels per edge), y channels, z mip count of the directional volumes, w slot capacity
+    // Toroidal addressing of the index and the list (clipmap levels,
+    // vxgi/clipmap.h): xyz the storage voxel of the grid's voxel 0, which is
+    // the window's minimum corner in whole voxels of the level modulo N; 0 for
+    // a fitted grid. The dense volumes (radiance, directional) are not
+    // toroidal: they are rebuilt every frame in grid coordinates.
+    ivec4 wrap;
+    // keep.w != 0: static voxelization skips the grid voxels in
+    // [keep.xyz, keep.xyz + N), those a scroll kept (only the slabs it exposed
+    // are voxelized).
+    ivec4 keep;
 };
-DVSGI_CHECK_SIZE(VoxelGrid, 32);
+DVSGI_CHECK_SIZE(VoxelGrid, 64);
+
+// Clipmap levels as one cone tracer sees them (lib/cone_trace.glsl with
+// DVSGI_CLIPMAP): level l's grid, each twice the voxel of the one before.
+DVSGI_CONST(uint, MAX_CLIP_LEVELS, 8);
+struct ConeLevels {
+    VoxelGrid level[MAX_CLIP_LEVELS];
+    uvec4 count;  // x levels in use
+};
+DVSGI_CHECK_SIZE(ConeLevels, 528);
 
 // Occlusion of a light at voxels (GpuLight.shadow.z, or a global override).
 DVSGI_CONST(uint, OCCLUSION_SHADOW_MAP, 0);
@@ -99,6 +118,8 @@ DVSGI_CONST(uint, CONE_SET_16, 16);  // sixteen cones over the hemisphere
 DVSGI_CONST(uint, BIND_CONE_GRID, 0);
 DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear
 DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips: the six volumes' atlas
+// With DVSGI_CLIPMAP: BIND_CONE_GRID holds ConeLevels, and the sampled
+// volumes are arrays of MAX_CLIP_LEVELS (unused ones repeat the last level).
 
 DVSGI_END
 

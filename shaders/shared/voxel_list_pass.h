@@ -15,7 +15,7 @@ DVSGI_BEGIN
 // The list buffer starts with this header; entries (uint, x | y << 10 | z << 20) follow.
 struct VoxelListHeader {
     uvec4 counts;         // x entries appended, y of them static (the first y), z capacity (slots), w claims dropped
-    uvec4 allGroups;      // vkCmdDispatchIndirect arguments (xyz) over every entry
+    uvec4 allGroups;      // vkCmdDispatchIndirect arguments (xyz) over every entry; w static entries freed by scrolls
     uvec4 dynamicGroups;  // over the dynamic entries [y, x)
 };
 DVSGI_CHECK_SIZE(VoxelListHeader, 48);
@@ -36,6 +36,10 @@ DVSGI_FUNCTION ivec3 unpackVoxel(uint e) {
     uint mask = (1u << VOXEL_LIST_COORD_BITS) - 1u;
     return ivec3(int(e & mask), int((e >> VOXEL_LIST_COORD_BITS) & mask), int(e >> (2u * VOXEL_LIST_COORD_BITS)));
 }
+
+// A static entry a clipmap scroll freed (vxgi/clipmap.h): passes over the
+// list skip it; its slot stays unused until the level is voxelized afresh.
+DVSGI_CONST(uint, VOXEL_LIST_FREE, 0xFFFFFFFFu);
 
 // The indirect dispatch arguments (x, y, z) over `entries` list entries, for
 // voxel_list.comp and for lists the host uploads.

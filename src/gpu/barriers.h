@@ -73,6 +73,11 @@ inline constexpr BufferUse BufferComputeReadWrite{
 inline constexpr BufferUse IndirectComputeRead{
     VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
     VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+// As IndirectComputeRead, with the shader writing it too (the clipmap scroll
+// marks entries and counts them; the dispatch arguments are read before).
+inline constexpr BufferUse IndirectComputeReadWrite{
+    VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+    VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
 // The voxelizer's fragments appending to a list.
 inline constexpr BufferUse FragmentReadWrite{
     VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
@@ -80,6 +85,8 @@ inline constexpr BufferUse FragmentReadWrite{
 inline constexpr BufferUse BufferTransferWrite{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT};
 // vkCmdCopyBuffer source.
 inline constexpr BufferUse BufferTransferRead{VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_READ_BIT};
+// A uniform buffer any stage of any pass may read (the voxel grid).
+inline constexpr BufferUse BufferUniformRead{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_UNIFORM_READ_BIT};
 inline constexpr BufferUse HostRead{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT};
 }  // namespace use
 

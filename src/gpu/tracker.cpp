@@ -127,4 +127,12 @@ VkImageLayout Tracker::layout(const Image& image, uint32_t mip) const {
     return it == imageHistory_.end() ? VK_IMAGE_LAYOUT_UNDEFINED : it->second.at(mip).layout;
 }
 
+void recordUniformUpdate(VkCommandBuffer cmd, Tracker& tracker, const Buffer& buffer, const void* data,
+                         VkDeviceSize bytes) {
+    // Passes do not declare their uniform reads: assume one before the write.
+    tracker.buffer(buffer, use::BufferUniformRead).buffer(buffer, use::BufferTransferWrite).flush(cmd);
+    vkCmdUpdateBuffer(cmd, buffer.handle(), 0, bytes, data);
+    tracker.buffer(buffer, use::BufferUniformRead).flush(cmd);
+}
+
 }  // namespace dvsgi::gpu

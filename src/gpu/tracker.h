@@ -70,4 +70,9 @@ private:
     std::vector<VkBufferMemoryBarrier2> buffers_;
 };
 
+// Records a small (<= 64 KiB) update of a uniform buffer inside a command
+// buffer, ordered after its earlier uses and before any later uniform read.
+void recordUniformUpdate(VkCommandBuffer cmd, Tracker& tracker, const Buffer& buffer, const void* data,
+                         VkDeviceSize bytes);
+
 }  // namespace dvsgi::gpu

@@ -10,6 +10,7 @@
 #include "shared/upsample_pass.h"
 #include "shared/voxel_data.h"
 #include "shared/scene_data.h"
+#include "vxgi/clipmap.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::render {
@@ -20,6 +21,9 @@ namespace sh = dvsgi::shader;
 
 const uint32_t kGather[] = {
 #include "shaders/gather.comp.inc"
+};
+const uint32_t kGatherClipmap[] = {
+#include "shaders/gather_clipmap.comp.inc"
 };
 const uint32_t kUpsample[] = {
 #include "shaders/upsample.comp.inc"
@@ -44,6 +48,8 @@ GatherPass::GatherPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::GatherPush);
     layout.pushConstantStages = cs;
     gather_ = gpu::Pipeline(ctx, gpu::Spirv(kGather), layout, "cone tracing");
+    layout.bindings[1].count = layout.bindings[2].count = sh::MAX_CLIP_LEVELS;
+    clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
 
     gpu::LayoutDesc up;
     up.bindings = {{sh::BIND_UP_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
@@ -74,25 +80,38 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .image(g.depth, gpu::use::DepthRead)
             .image(v.radiance, gpu::use::ComputeRead);
         tracker.image(v.directional, gpu::use::ComputeRead);
+        if (in.clip)
+            for (const vxgi::VoxelVolumes* l : in.clip->volumes)
+                tracker.image(l->radiance, gpu::use::ComputeRead).image(l->directional, gpu::use::ComputeRead);
         tracker.image(outD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
         const VkSampler volumeSampler = in.samplers.volume.handle();
-        gpu::bind(cmd, gather_);
-        gpu::Descriptors()
-            .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
-            .sampledImage(sh::BIND_GATHER_RADIANCE, v.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-            .uniformBuffer(sh::BIND_GATHER_FRAME, in.frame.handle())
+        const gpu::Pipeline& pipeline = in.clip ? clipGather_ : gather_;
+        gpu::bind(cmd, pipeline);
+        gpu::Descriptors d;
+        if (in.clip) {
+            d.uniformBuffer(sh::BIND_CONE_GRID, in.clip->levels.handle())
+                .sampledImages(sh::BIND_GATHER_RADIANCE, in.clip->radianceViews(), volumeSampler,
+                               VK_IMAGE_LAYOUT_GENERAL)
+                .sampledImages(sh::BIND_CONE_DIRECTIONAL, in.clip->directionalViews(), volumeSampler,
+                               VK_IMAGE_LAYOUT_GENERAL);
+        } else {
+            d.uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
+                .sampledImage(sh::BIND_GATHER_RADIANCE, v.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+                .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL);
+        }
+        d.uniformBuffer(sh::BIND_GATHER_FRAME, in.frame.handle())
             .sampledImage(sh::BIND_GATHER_BASE, g.base.view(), point)
             .sampledImage(sh::BIND_GATHER_NORMAL, g.normal.view(), point)
             .sampledImage(sh::BIND_GATHER_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
             .storageImage(sh::BIND_GATHER_OUT_DIFFUSE, outD.view())
             .storageImage(sh::BIND_GATHER_OUT_SPECULAR, outS.view())
-            .push(ctx_, cmd, gather_);
+            .push(ctx_, cmd, pipeline);
         sh::GatherPush push{};
-        push.cone = vxgi::gpuCone(cone, v.grid);
+        // Cones may run as far as the largest grid reaches.
+        push.cone = vxgi::gpuCone(cone, in.clip ? in.clip->volumes.back()->grid : v.grid);
         push.params = glm::vec4(0.0f, s.aoLambda, 0.0f, std::tan(glm::radians(s.minSpecularDegrees)));
         push.flags = glm::uvec4(0u, s.specular ? 1u : 0u, traceWidth, traceHeight);
-        gpu::pushConstants(cmd, gather_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(traceWidth, sh::GATHER_GROUP), gpu::groupCount(traceHeight, sh::GATHER_GROUP), 1);
     }
     if (!reduced) return;

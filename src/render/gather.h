@@ -13,6 +13,7 @@ class Tracker;
 }
 namespace dvsgi::vxgi {
 class VoxelVolumes;
+struct ClipTrace;
 }
 
 namespace dvsgi::render {
@@ -32,6 +33,7 @@ struct GatherInputs {
     const vxgi::VoxelVolumes& volumes;  // radiance and the filtered directional volumes
     const Samplers& samplers;
     const gpu::Buffer& frame;
+    const vxgi::ClipTrace* clip = nullptr;  // clipmap levels to trace instead of `volumes`
 };
 
 // The cone-traced terms at internal size, and at trace size when the trace
@@ -52,7 +54,7 @@ public:
 
 private:
     const gpu::Context& ctx_;
-    gpu::Pipeline gather_, upsample_;
+    gpu::Pipeline gather_, clipGather_, upsample_;
 };
 
 }  // namespace dvsgi::render

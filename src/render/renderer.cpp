@@ -102,10 +102,13 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         const vxgi::GridSpec grid =
             settings.hasVoxelBox ? vxgi::gridForBox(settings.voxelBoxMin, settings.voxelBoxMax, settings.voxels)
                                  : vxgi::fitGrid(sceneGpu_->bounds, settings.voxels);
-        volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid, settings.voxelSlots);
         voxelizer_ =
             std::make_unique<vxgi::Voxelizer>(ctx, *sceneGpu_, settings.hardwareConservative, settings.voxelizer);
         if (voxelizer_->kind() == vxgi::VoxelizerKind::Pv) pv_ = std::make_unique<vxgi::PvVoxelizer>(ctx);
+        if (settings.clipmap.levels > 0)
+            createClipmap();
+        else
+            volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid, settings.voxelSlots);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
         list_ = std::make_unique<vxgi::VoxelListPass>(ctx);
         listHeader_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::VoxelListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -210,9 +213,19 @@ void Renderer::updateFrameConstants() {
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
     gpu::GpuTimers* t = timers_.get();
     const vxgi::ConeSettings cone = vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor);
-    bounce_->record(cmd, tracker_, *volumes_, samplers_->volume.handle(), cone,
-                    withStats ? bounceStats_.get() : nullptr, t);
-    aniso_->record(cmd, tracker_, *volumes_, t, "voxel filtering (bounce)");
+    const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
+    if (clip_.empty()) {
+        bounce_->record(cmd, tracker_, *volumes_, samplers_->volume.handle(), cone,
+                        withStats ? bounceStats_.get() : nullptr, t);
+    } else {
+        // Every level's voxels trace from their level up, through the windows
+        // the directional volumes were filtered in; statistics: level 0's.
+        const vxgi::ClipTrace trace{*directionalLevels_, levels};
+        for (size_t l = 0; l < levels.size(); ++l)
+            bounce_->record(cmd, tracker_, *levels[l], samplers_->volume.handle(), cone,
+                            withStats && l == 0 ? bounceStats_.get() : nullptr, t, &trace, uint32_t(l));
+    }
+    recordFilter(cmd, "voxel filtering (bounce)");
 }
 
 // Voxelization, shadow maps and the voxel light up to (not including) the
@@ -221,6 +234,8 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     if (pv_) {
         recordProgressiveVoxels(cmd);
+    } else if (!clip_.empty()) {
+        recordClipmapVoxels(cmd);
     } else if (voxelizer_) {
         // The occupied-voxel list holds the static voxels, then this frame's
         // dynamic ones; the per-voxel passes below run over it.
@@ -241,18 +256,20 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     // Emitters lit as patches leave their emission out of the voxel radiance.
     vxgi::VoxelLightSettings light = settings_.voxelLight;
     light.emissionInRadiance = patchCount_ == 0;
-    inject_->record(cmd, tracker_, *volumes_, shadows, light, t);
+    for (const vxgi::VoxelVolumes* v : levelVolumes()) inject_->record(cmd, tracker_, *v, shadows, light, t);
     if (feedbackFrame()) {
         // The directional volumes still hold the previous frame's filtered
         // radiance: one bounce from them adds one more bounce of light.
         recordBounce(cmd, false);
         return;
     }
-    aniso_->record(cmd, tracker_, *volumes_, t, "voxel filtering");
+    recordFilter(cmd, "voxel filtering");
 }
 
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
+    for (size_t l = 0; l < clip_.size(); ++l) recordClipmapStatic(cmd, l, clip_[l].windowMin);
+    if (!clip_.empty()) return;
     // Clears every voxel, dynamic ones included: the list restarts empty.
     // New volumes start zeroed with an empty list, and after that the list
     // names every voxel that can hold anything, so clearing those is enough
@@ -269,7 +286,7 @@ std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
     timers_->reset();
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
         recordStaticVoxels(cmd);
-        list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
+        for (size_t l = 0; l < levelVolumes().size(); ++l) list_->copyHeader(cmd, tracker_, level(l), levelHeader(l));
     });
     // As after a frame: claims dropped for want of slots left index words
     // that no list entry names, which only new, larger volumes clear.
@@ -289,7 +306,8 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
-        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_};
+        const vxgi::ClipTrace trace{coneLevels_ ? *coneLevels_ : *frame_, levelVolumes()};
+        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, clip_.empty() ? nullptr : &trace};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
                                 f.reducedTrace() ? &f.traceSpecular : nullptr};
         gather_->record(cmd, tracker_, in, out, settings_.gather, settings_.cones, t);
@@ -369,6 +387,7 @@ FrameStats Renderer::renderFrame() {
         if (!converge) recordImage(cmd);
     });
     if (growVoxelSlots()) return renderFrame();
+    readClipmapHeaders();
     stats.bounces = feedback ? 1 : fixed;
     if (converge) {
         // Bounce increments shrink geometrically (by r per bounce), so what is
@@ -404,8 +423,15 @@ FrameStats Renderer::renderFrame() {
     staticDirty_ = false;
     haveHistory_ = voxelizer_ != nullptr;
     for (const gpu::TimerResult& r : timers_->results()) {
-        if (r.name == "frame")
+        if (r.name == "frame") {
             stats.gpuMs = r.ms;
+            continue;
+        }
+        // --clipmap: a pass run once per level is reported once, summed.
+        const auto same = std::find_if(stats.passes.begin(), stats.passes.end(),
+                                       [&](const gpu::TimerResult& p) { return p.name == r.name; });
+        if (!clip_.empty() && same != stats.passes.end())
+            same->ms += r.ms;
         else
             stats.passes.push_back(r);
     }
@@ -414,20 +440,28 @@ FrameStats Renderer::renderFrame() {
 
 bool Renderer::growVoxelSlots() {
     if (!voxelizer_) return false;
-    sh::VoxelListHeader header;
-    std::memcpy(&header, listHeader_->mapped(), sizeof(header));
-    if (header.counts.w == 0) return false;
-    // Every claim past the capacity was counted; a quarter more leaves room
-    // for moving objects. The old volumes are idle (the frame was waited for).
-    const uint64_t wanted = (uint64_t(volumes_->slots) + header.counts.w) * 5 / 4;
-    const uint32_t slots = vxgi::roundSlotCapacity(volumes_->grid.n, wanted);
-    if (slots <= volumes_->slots)
-        throw std::runtime_error("voxels: a voxelization ran out of its " + std::to_string(volumes_->slots) +
-                                 " voxel slots, which already cover the whole grid");
-    const vxgi::GridSpec grid = volumes_->grid;
-    volumes_.reset();
-    volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, slots);
-    for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
+    bool grown = false;
+    for (size_t l = 0; l < levelVolumes().size(); ++l) {
+        sh::VoxelListHeader header;
+        std::memcpy(&header, levelHeader(l).mapped(), sizeof(header));
+        if (header.counts.w == 0) continue;
+        // Every claim past the capacity was counted; a quarter more leaves
+        // room for moving objects. The old volumes are idle (the frame was waited for).
+        vxgi::VoxelVolumes& v = level(l);
+        const uint64_t wanted = (uint64_t(v.slots) + header.counts.w) * 5 / 4;
+        const uint32_t slots = vxgi::roundSlotCapacity(v.grid.n, wanted);
+        if (slots <= v.slots)
+            throw std::runtime_error("voxels: a voxelization ran out of its " + std::to_string(v.slots) +
+                                     " voxel slots, which already cover the whole grid");
+        const vxgi::GridSpec grid = v.grid;
+        std::unique_ptr<vxgi::VoxelVolumes>& owner = l == 0 ? volumes_ : clip_[l].volumes;
+        owner.reset();
+        owner = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, slots);
+        for (const gpu::Image* img : owner->all()) tracker_.assume(*img, gpu::use::ComputeReadWrite);
+        if (!clip_.empty()) clip_[l].placed = false;
+        grown = true;
+    }
+    if (!grown) return false;
     bounceStats_.reset();
     staticDirty_ = true;
     haveHistory_ = false;
@@ -439,7 +473,8 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
            a.shadowMapSize != b.shadowMapSize || a.camera != b.camera || a.voxels != b.voxels || a.voxelSlots != b.voxelSlots ||
            a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
            a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.pv.rsm != b.pv.rsm || a.pv.views != b.pv.views ||
-           a.gather.traceScale != b.gather.traceScale ||
+           a.gather.traceScale != b.gather.traceScale || a.clipmap.levels != b.clipmap.levels ||
+           a.clipmap.voxelSize != b.clipmap.voxelSize ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
 }

@@ -20,6 +20,7 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 #include "shared/scene_data.h"
+#include "vxgi/clipmap.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxel_light_settings.h"
 #include "vxgi/pv_voxelize.h"
@@ -47,6 +48,7 @@ struct RenderSettings {
     uint32_t voxels = 128;            // N of the N^3 grid; 0 = no voxel passes
     uint32_t voxelSlots = 0;          // initial voxel slot capacity (0 = vxgi::defaultSlotCapacity); grows as needed
     bool hasVoxelBox = false;         // grid on a user box instead of the scene bounds
+    vxgi::ClipmapSettings clipmap;    // levels > 0: camera-following clipmap levels instead of one fitted grid
     glm::vec3 voxelBoxMin{0.0f}, voxelBoxMax{0.0f};
     bool hardwareConservative = true; // VK_EXT_conservative_rasterization when the device has it
     vxgi::VoxelizerKind voxelizer = vxgi::VoxelizerKind::Auto;  // resolved by vxgi::resolveVoxelizer
@@ -93,6 +95,7 @@ class VoxelListPass;
 class InjectPass;
 class AnisoFilterPass;
 class BouncePass;
+class ClipScrollPass;
 }
 namespace dvsgi::render {
 
@@ -130,7 +133,10 @@ public:
     // how the bench times it beside ordinary frames. Empty without voxels.
     std::vector<gpu::TimerResult> revoxelizeStatic();
 
+    // The voxel volumes (with --clipmap, level 0's, the finest).
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
+    // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
+    std::vector<const vxgi::VoxelVolumes*> levelVolumes() const;
     const vxgi::Voxelizer* voxelizer() const { return voxelizer_.get(); }
     const vxgi::InjectPass* injectPass() const { return inject_.get(); }
     const vxgi::BouncePass* bouncePass() const { return bounce_.get(); }
@@ -163,6 +169,14 @@ private:
     void recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
+    // Clipmap (renderer_clipmap.cpp): levels, windows, scrolls.
+    void createClipmap();
+    void recordClipmapVoxels(VkCommandBuffer cmd);
+    void recordClipmapStatic(VkCommandBuffer cmd, size_t level, const glm::ivec3& windowMin);
+    void recordFilter(VkCommandBuffer cmd, const char* timer);  // every level's directional volumes
+    vxgi::VoxelVolumes& level(size_t l) { return l == 0 ? *volumes_ : *clip_[l].volumes; }
+    const gpu::Buffer& levelHeader(size_t l) const { return l == 0 ? *listHeader_ : *clip_[l].header; }
+    void readClipmapHeaders();  // after a frame: levels that freed many entries start afresh
     void recordImage(VkCommandBuffer cmd);
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
     void recordTemporal(VkCommandBuffer cmd);
@@ -207,6 +221,21 @@ private:
     std::unique_ptr<vxgi::InjectPass> inject_;
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
+    // --clipmap: one entry per level (level 0's volumes and header are
+    // volumes_ and listHeader_); empty for a fitted grid.
+    struct ClipLevel {
+        std::unique_ptr<vxgi::VoxelVolumes> volumes;
+        std::unique_ptr<gpu::Buffer> header;  // host-visible copy of its list header
+        glm::ivec3 windowMin{0};
+        bool placed = false;  // voxelized at windowMin (else: from scratch next frame)
+    };
+    std::vector<ClipLevel> clip_;
+    std::unique_ptr<vxgi::ClipScrollPass> scroll_;
+    // shader::ConeLevels of this frame's windows, and of the windows the
+    // directional volumes were filtered in (last frame's until this frame filters).
+    std::unique_ptr<gpu::Buffer> coneLevels_, coneHistory_;
+    shader::ConeLevels coneLevelsHost_{};
+    const gpu::Buffer* directionalLevels_ = nullptr;
     std::unique_ptr<GatherPass> gather_;
     std::unique_ptr<TemporalIndirectPass> temporal_;
     TemporalState temporalState_;  // dropped when static geometry, lights or settings change

@@ -7,6 +7,7 @@
 #include "gpu/tracker.h"
 #include "shared/bounce_pass.h"
 #include "shared/voxel_list_pass.h"
+#include "vxgi/clipmap.h"
 #include "vxgi/voxel_list.h"
 #include "vxgi/volumes.h"
 
@@ -18,6 +19,9 @@ namespace sh = dvsgi::shader;
 
 const uint32_t kBounce[] = {
 #include "shaders/bounce.comp.inc"
+};
+const uint32_t kBounceClipmap[] = {
+#include "shaders/bounce_clipmap.comp.inc"
 };
 
 }  // namespace
@@ -35,16 +39,22 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
+    layout.bindings[1].count = sh::MAX_CLIP_LEVELS;
+    layout.bindings.push_back({sh::BIND_BOUNCE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs});
+    clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
 }
 
 uint32_t BouncePass::statsFloats(uint32_t slots) { return voxelListMaxGroups(slots) * sh::BOUNCE_STATS_FLOATS; }
 
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
-                        const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const {
+                        const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers,
+                        const ClipTrace* clip, uint32_t level) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
     tracker.image(v.directional, gpu::use::ComputeRead);
+    if (clip)
+        for (const VoxelVolumes* l : clip->volumes) tracker.image(l->directional, gpu::use::ComputeRead);
     // Read and written: the statistics compare each voxel with its value before.
     tracker.image(v.radiance, gpu::use::ComputeReadWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeRead);
@@ -55,18 +65,25 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         tracker.buffer(*stats, gpu::use::BufferComputeWrite);
     }
     tracker.flush(cmd);
-    gpu::bind(cmd, pipeline_);
-    gpu::Descriptors()
-        .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
-        .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
+    const gpu::Pipeline& pipeline = clip ? clipPipeline_ : pipeline_;
+    gpu::bind(cmd, pipeline);
+    gpu::Descriptors d;
+    if (clip) {
+        d.uniformBuffer(sh::BIND_CONE_GRID, clip->levels.handle())
+            .uniformBuffer(sh::BIND_BOUNCE_GRID, v.gridBuffer.handle())
+            .sampledImages(sh::BIND_CONE_DIRECTIONAL, clip->directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL);
+    } else {
+        d.uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
+            .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL);
+    }
+    d.storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
         .storageImage(sh::BIND_BOUNCE_DIRECT, v.direct.view())
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
-        .push(ctx_, cmd, pipeline_);
-    const sh::BouncePush push{gpuCone(cone, v.grid), glm::uvec4(stats ? 1u : 0u, 0u, 0u, 0u)};
-    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        .push(ctx_, cmd, pipeline);
+    const sh::BouncePush push{gpuCone(cone, clip ? clip->volumes.back()->grid : v.grid), glm::uvec4(stats ? 1u : 0u, level, 0u, 0u)};
+    gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
     if (stats) tracker.buffer(*stats, gpu::use::HostRead).flush(cmd);
 }

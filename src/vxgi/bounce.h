@@ -16,6 +16,7 @@ class Tracker;
 namespace dvsgi::vxgi {
 
 class VoxelVolumes;
+struct ClipTrace;
 
 class BouncePass {
 public:
@@ -24,13 +25,17 @@ public:
     // `volumeSampler`), writes `radiance`. `stats` (optional, statsFloats(slots)
     // floats, host-visible) receives per-workgroup sums of |luminance change|
     // and luminance over occupied voxels, readable by the host after the submission.
+    // With `clip`, `volumes` is clipmap level `level` and its cones trace the
+    // levels from it up (clip's ConeLevels and volumes: the previous frame's
+    // windows when the bounce feeds back); its directional volumes are read.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, VkSampler volumeSampler,
-                const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers) const;
+                const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers,
+                const ClipTrace* clip = nullptr, uint32_t level = 0) const;
     static uint32_t statsFloats(uint32_t slots);
 
 private:
     const gpu::Context& ctx_;
-    gpu::Pipeline pipeline_;
+    gpu::Pipeline pipeline_, clipPipeline_;
     gpu::Buffer noStats_;  // bound when no statistics are asked for (the binding must stay valid)
 };
 

@@ -6,6 +6,7 @@
 
 #include "gpu/barriers.h"
 #include "gpu/context.h"
+#include "gpu/tracker.h"
 #include "gpu/transfer.h"
 #include "shared/voxel_data.h"
 #include "shared/voxel_list_pass.h"
@@ -134,8 +135,9 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
     d.name = "directional volumes";
     directional = gpu::Image(ctx, d);
 
-    const sh::VoxelGrid gpuGrid{glm::vec4(g.origin, g.voxelSize), glm::uvec4(g.n, sh::VOXEL_CHANNELS, directionalMips, slots)};
-    gridBuffer = gpu::createBuffer(ctx, &gpuGrid, sizeof(gpuGrid), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "voxel grid");
+    const sh::VoxelGrid gpuGrid = gpuVoxelGrid(g, slots);
+    gridBuffer = gpu::createBuffer(ctx, &gpuGrid, sizeof(gpuGrid),
+                                   VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, "voxel grid");
 
     list = gpu::Buffer(ctx, voxelListBytes(slots),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
@@ -162,6 +164,21 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
             gpu::transition(cmd, *img, gpu::use::TransferDst, gpu::use::ComputeReadWrite);
         }
     });
+}
+
+sh::VoxelGrid gpuVoxelGrid(const GridSpec& g, uint32_t slots, const glm::ivec4& keep) {
+    sh::VoxelGrid v{};
+    v.originSize = glm::vec4(g.origin, g.voxelSize);
+    v.dims = glm::uvec4(g.n, sh::VOXEL_CHANNELS, directionalMipCount(g.n), slots);
+    v.wrap = glm::ivec4(g.wrap, 0);
+    v.keep = keep;
+    return v;
+}
+
+void VoxelVolumes::setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const GridSpec& g, const glm::ivec4& keep) {
+    grid = g;
+    const sh::VoxelGrid v = gpuVoxelGrid(g, slots, keep);
+    gpu::recordUniformUpdate(cmd, tracker, gridBuffer, &v, sizeof(v));
 }
 
 std::vector<const gpu::Image*> VoxelVolumes::all() const {

@@ -9,7 +9,12 @@
 #include <glm/glm.hpp>
 
 #include "gpu/resources.h"
+#include "shared/voxel_data.h"
 #include "scene/scene.h"
+
+namespace dvsgi::gpu {
+class Tracker;
+}
 
 namespace dvsgi::vxgi {
 
@@ -17,6 +22,9 @@ struct GridSpec {
     glm::vec3 origin{0.0f};  // world position of the grid's minimum corner
     float voxelSize = 1.0f;  // edge of one voxel, metres
     uint32_t n = 128;        // voxels per edge
+    // Storage voxel of grid voxel 0 (shader::VoxelGrid.wrap): a clipmap
+    // level's window minimum modulo n; 0 for a fitted grid.
+    glm::ivec3 wrap{0};
 };
 
 // A cube on the longest side of `bounds` plus four and a half voxels of margin
@@ -29,6 +37,9 @@ GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n);
 GridSpec gridForBox(const glm::vec3& boxMin, const glm::vec3& boxMax, uint32_t n);
 
 uint32_t directionalMipCount(uint32_t n);  // (N/2)^3 down to 1^3
+
+// The shader's view of a grid (shader::VoxelGrid).
+shader::VoxelGrid gpuVoxelGrid(const GridSpec& g, uint32_t slots, const glm::ivec4& keep = glm::ivec4(0));
 
 // Slots (occupied voxels that can be stored) an N^3 grid starts with: 16 N^2
 // (a surface crosses about N^2 voxels per unit of area; measured occupancy is
@@ -69,6 +80,10 @@ public:
     // packed coordinate per slot. Storage, indirect-dispatch arguments, fills.
     gpu::Buffer list;
     double bytesPerGridVoxel() const { return voxelBytesPerGridVoxel(grid.n, slots); }
+    // Records a new grid (same n: a clipmap level's scrolled window) into
+    // gridBuffer and `grid`; keep (shader::VoxelGrid.keep) limits the next
+    // static voxelization to the voxels outside it.
+    void setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const GridSpec& g, const glm::ivec4& keep);
     // Every volume (image), for code that handles them all alike. They start
     // zeroed, in gpu::use::ComputeReadWrite; so does the index.
     std::vector<const gpu::Image*> all() const;

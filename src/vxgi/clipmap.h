@@ -1,0 +1,74 @@
+// Camera-following voxel clipmaps (docs/clipmap.md): L levels of N^3 voxels,
+// level l's voxel 2^l times level 0's, each window centred on the camera and
+// snapped to whole voxels of its level. The index and the list of a level are
+// toroidal (shader::VoxelGrid.wrap: storage voxel = world voxel mod N), so a
+// move keeps every voxel that stays in the window where it is: the scroll pass
+// frees those that left, and static voxelization fills only the exposed slabs.
+// The dense volumes (radiance, directional) are rebuilt every frame in window
+// coordinates, so every per-voxel pass works on a level as on a fitted grid.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/pipeline.h"
+#include "gpu/resources.h"
+#include "scene/scene.h"
+#include "shared/voxel_data.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::gpu {
+class GpuTimers;
+class Tracker;
+}
+
+namespace dvsgi::vxgi {
+
+struct ClipmapSettings {
+    uint32_t levels = 0;     // 0 = one grid fitted to the scene
+    float voxelSize = 0.0f;  // level 0's voxel edge (m); 0 = clipBaseVoxelSize
+};
+
+// Windows move in steps of this many voxels of their level, so the cells of
+// directional mips 0 and 1 (2 and 4 voxels) keep their place in the world and
+// a scroll changes the filtered light only where voxels came or went.
+inline constexpr int kClipSnapVoxels = 4;
+
+// Level 0's voxel edge when none is given: the coarsest level spans twice the
+// scene's longest side, so its window holds the whole scene from anywhere in it.
+float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels);
+// The minimum corner (in whole voxels of edge voxelSize) of an N^3 window
+// centred on `centre`, snapped to kClipSnapVoxels.
+glm::ivec3 clipWindowMin(const glm::vec3& centre, float voxelSize, uint32_t n);
+// The grid of a window: origin at its minimum corner, wrap = minimum mod N.
+GridSpec clipLevelGrid(const glm::ivec3& windowMin, float voxelSize, uint32_t n);
+// What a clipmap cone tracer reads of the levels (level 0 first).
+shader::ConeLevels coneLevels(const std::vector<const VoxelVolumes*>& levels);
+
+// The inputs of a cone tracer over clipmap levels: ConeLevels and the levels'
+// volumes (the sampled arrays repeat the last level up to MAX_CLIP_LEVELS).
+struct ClipTrace {
+    const gpu::Buffer& levels;
+    std::vector<const VoxelVolumes*> volumes;
+    std::vector<VkImageView> radianceViews() const;
+    std::vector<VkImageView> directionalViews() const;
+};
+
+// Frees a level's static voxels that a move of its window from oldMin to
+// newMin took out of it (clipmap_scroll.comp). Run with the old grid, after
+// the dynamic voxels were cleared; then set the new grid and voxelize the
+// static draws with keep = oldMin - newMin.
+class ClipScrollPass {
+public:
+    explicit ClipScrollPass(const gpu::Context& ctx);
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, const glm::ivec3& oldMin,
+                const glm::ivec3& newMin, gpu::GpuTimers* timers) const;
+
+private:
+    const gpu::Context& ctx_;
+    gpu::Pipeline pipeline_;
+};
+
+}  // namespace dvsgi::vxgi

@@ -1,0 +1,331 @@
+// Camera-following clipmaps (--clipmap, vxgi/clipmap.h): the window arithmetic
+// on the host; a scrolled level equal, voxel for voxel, to one voxelized from
+// scratch at the new position; every level equal to a fitted grid on its window
+// once the toroidal roll is undone on the CPU (nothing lost or doubled at the
+// windows' borders); the indirect light continuous across a level border; and
+// a light switched off leaving no ghost.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <set>
+#include <vector>
+
+#include <glm/gtc/constants.hpp>
+
+#include "gpu/transfer.h"
+#include "gpu_fixture.h"
+#include "shared/composite_pass.h"
+#include "shared/voxel_data.h"
+#include "shared/voxel_list_pass.h"
+#include "vxgi/clipmap.h"
+#include "vxgi/voxel_storage_io.h"
+
+namespace dvsgi::test {
+namespace {
+
+namespace sh = dvsgi::shader;
+
+constexpr uint32_t kN = 32;
+constexpr float kVoxel = 1.0f / 16.0f;  // level 0: a 2 m window; level 1: 4 m
+
+TEST(ClipmapWindow, CentredOnTheCameraAndSnapped) {
+    // Voxel 0.5: the camera at x = 10.2 is in voxel 20; 20 - 16 = 4 is a multiple of 4.
+    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(10.2f, -0.1f, -7.9f), 0.5f, 32), glm::ivec3(4, -16, -32));
+    // Half a snap step either way rounds to the nearest multiple.
+    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(0.9f, 0.0f, 1.1f), 0.5f, 32).x, -16);  // voxel 1: -15 -> -16
+    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(1.1f, 0.0f, 0.0f), 0.5f, 32).x, -12);  // voxel 2: -14 -> -12
+    for (float x = -20.0f; x < 20.0f; x += 0.37f) {
+        const glm::ivec3 m = vxgi::clipWindowMin(glm::vec3(x), 0.25f, 64);
+        EXPECT_EQ(m.x % vxgi::kClipSnapVoxels, 0);
+        // The camera stays within a snap step of the window's centre.
+        EXPECT_LE(std::abs(x / 0.25f - float(m.x + 32)), float(vxgi::kClipSnapVoxels / 2) + 1.0f) << x;
+    }
+}
+
+TEST(ClipmapWindow, GridWrapsNegativeCornersIntoTheVolume) {
+    const vxgi::GridSpec g = vxgi::clipLevelGrid(glm::ivec3(-36, 0, 40), 0.25f, 32);
+    EXPECT_EQ(g.wrap, glm::ivec3(28, 0, 8));
+    EXPECT_EQ(g.origin, glm::vec3(-9.0f, 0.0f, 10.0f));
+    EXPECT_EQ(g.voxelSize, 0.25f);
+    scene::Bounds b;
+    b.min = glm::vec3(-10.0f, 0.0f, -2.0f);
+    b.max = glm::vec3(10.0f, 3.0f, 2.0f);
+    // The coarsest of 3 levels spans twice the longest side: 32 x 4 x s0 = 40 m.
+    EXPECT_FLOAT_EQ(vxgi::clipBaseVoxelSize(b, 32, 3), 40.0f / 128.0f);
+}
+
+// A floor, a wall and a sphere spread over more than one level-0 window.
+scene::Scene spreadScene(bool emissive = true) {
+    scene::Scene s;
+    const int grey = addMaterial(s, glm::vec3(0.6f));
+    const int red = addMaterial(s, glm::vec3(0.8f, 0.2f, 0.1f), glm::vec3(0.0f, 0.0f, emissive ? 0.5f : 0.0f));
+    const float q = glm::half_pi<float>();
+    addQuad(s, grey, glm::vec3(0.0f, -0.45f, 0.0f), 2.5f);
+    addQuad(s, red, glm::vec3(1.3f, 0.2f, 0.0f), 0.6f, glm::angleAxis(q, glm::vec3(0, 0, 1)));
+    addMeshNode(s, icosphere(2), red, glm::vec3(-0.8f, -0.1f, 0.6f), glm::quat(1, 0, 0, 0), glm::vec3(0.35f));
+    addTopDownCamera(s, 0.3f, glm::radians(70.0f));
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    sun.intensity = 3.0f;
+    addLight(s, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::normalize(glm::vec3(-0.5f, -1.0f, -0.3f)));
+    return s;
+}
+
+render::RenderSettings clipSettings(uint32_t levels) {
+    render::RenderSettings rs;
+    rs.width = rs.height = 32;
+    rs.shadowMapSize = 256;
+    rs.voxels = kN;
+    rs.voxelizer = vxgi::VoxelizerKind::Compute;
+    rs.clipmap.levels = levels;
+    rs.clipmap.voxelSize = kVoxel;
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 1;
+    return rs;
+}
+
+void moveCamera(render::Renderer& r, glm::vec3 position) {
+    for (scene::Node& n : r.scene().nodes)
+        if (n.camera >= 0) n.translation = position;
+    r.sceneChanged();
+}
+
+sh::VoxelListHeader listHeader(const vxgi::VoxelVolumes& v) {
+    const std::vector<uint8_t> bytes = gpu::readbackBuffer(context(), v.list);
+    sh::VoxelListHeader h;
+    std::memcpy(&h, bytes.data(), sizeof(h));
+    return h;
+}
+
+// Compares two levels' storage voxel for voxel: occupancy and every channel's sum.
+void expectSameStorage(const vxgi::VoxelVolumes& a, const vxgi::VoxelVolumes& b, size_t* occupied) {
+    const std::vector<uint32_t> ia = vxgi::readVoxelIndex(context(), a), ib = vxgi::readVoxelIndex(context(), b);
+    const vxgi::DenseAttributes da = vxgi::readAttributes(context(), a), db = vxgi::readAttributes(context(), b);
+    size_t differ = 0, worst = 0;
+    *occupied = 0;
+    const int n = int(a.grid.n);
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const size_t o = size_t(x) + size_t(n) * (size_t(y) + size_t(n) * size_t(z));
+                const bool oa = sh::indexSlot(ia[o]) != 0, ob = sh::indexSlot(ib[o]) != 0;
+                *occupied += oa;
+                if (oa != ob) {
+                    ++differ;
+                    continue;
+                }
+                for (uint32_t c = 0; c < sh::VOXEL_CHANNELS; ++c) {
+                    const float va = da.at(x, y, z, c), vb = db.at(x, y, z, c);
+                    if (std::abs(va - vb) > 1e-4f * std::max(1.0f, std::abs(vb))) ++worst;
+                }
+            }
+    EXPECT_EQ(differ, 0u) << "voxels occupied in one and not the other";
+    EXPECT_EQ(worst, 0u) << "channel sums that differ";
+}
+
+class Clipmap : public GpuTest {};
+
+// The camera moves by a few voxels (the windows scroll: the scroll pass frees
+// what left, static voxelization fills only the exposed slabs), then by more
+// than a window (everything is freed and refilled). After each move every
+// level holds exactly what a clipmap built at the new position from scratch
+// holds: same window, so the same toroidal layout, voxel for voxel.
+TEST_F(Clipmap, ScrolledLevelsEqualLevelsVoxelizedAtTheNewPosition) {
+    const scene::Scene s = spreadScene();
+    render::Renderer moving(context(), s, clipSettings(2));
+    moving.renderFrame();
+    uint32_t freedBefore = 0;
+    int move = 0;
+    for (const glm::vec3 to : {glm::vec3(0.55f, 0.3f, -0.4f), glm::vec3(-0.9f, 0.2f, 0.8f), glm::vec3(2.6f, 0.3f, 0.3f)}) {
+        moveCamera(moving, to);
+        const render::FrameStats stats = moving.renderFrame();
+        const bool scrolled = std::any_of(stats.passes.begin(), stats.passes.end(),
+                                          [](const gpu::TimerResult& p) { return p.name == "clipmap scroll"; });
+        EXPECT_TRUE(scrolled) << "no scroll pass ran";
+        render::Renderer fresh(context(), s, clipSettings(2));
+        moveCamera(fresh, to);
+        fresh.renderFrame();
+        const std::vector<const vxgi::VoxelVolumes*> a = moving.levelVolumes(), b = fresh.levelVolumes();
+        ASSERT_EQ(a.size(), 2u);
+        for (size_t l = 0; l < a.size(); ++l) {
+            ASSERT_EQ(a[l]->grid.origin, b[l]->grid.origin);
+            ASSERT_EQ(a[l]->grid.wrap, b[l]->grid.wrap);
+            size_t occupied = 0;
+            expectSameStorage(*a[l], *b[l], &occupied);
+            const sh::VoxelListHeader h = listHeader(*a[l]);
+            std::printf("  camera (%.2f, %.2f, %.2f), level %zu: window at (%.3f, %.3f, %.3f), wrap (%d, %d, %d), "
+                        "%zu voxels, %u list entries freed by scrolls\n",
+                        to.x, to.y, to.z, l, a[l]->grid.origin.x, a[l]->grid.origin.y, a[l]->grid.origin.z,
+                        a[l]->grid.wrap.x, a[l]->grid.wrap.y, a[l]->grid.wrap.z, occupied, h.allGroups.w);
+            EXPECT_GT(occupied, 100u);
+        }
+        // The first two moves scroll level 0 (entries freed add up); by the
+        // third, freed entries are over half its list, so the frame after the
+        // second voxelized it afresh, which compacts it (freed count back to 0).
+        const uint32_t freed = listHeader(*a[0]).allGroups.w;
+        if (move < 2)
+            EXPECT_GT(freed, freedBefore);
+        else
+            EXPECT_EQ(freed, 0u);
+        freedBefore = freed;
+        ++move;
+    }
+}
+
+// Each level, with the toroidal roll undone on the CPU (grid voxel v lives in
+// storage (v + wrap) mod N), equals a fitted grid on the level's window: no
+// voxel lost or doubled at the window's faces, where the level borders the
+// next; and its list names every occupied voxel once.
+TEST_F(Clipmap, EveryLevelIsTheFittedGridOfItsWindowRolled) {
+    const scene::Scene s = spreadScene();
+    render::Renderer clip(context(), s, clipSettings(3));
+    clip.renderFrame();
+    moveCamera(clip, glm::vec3(0.7f, 0.3f, -0.3f));  // scrolled, so wrap != 0 on some axes
+    clip.renderFrame();
+    const std::vector<const vxgi::VoxelVolumes*> levels = clip.levelVolumes();
+    ASSERT_EQ(levels.size(), 3u);
+    for (size_t l = 0; l < levels.size(); ++l) {
+        const vxgi::VoxelVolumes& c = *levels[l];
+        render::RenderSettings fs = clipSettings(0);
+        fs.hasVoxelBox = true;
+        fs.voxelBoxMin = c.grid.origin;
+        fs.voxelBoxMax = c.grid.origin + c.grid.voxelSize * float(kN);
+        render::Renderer fitted(context(), s, fs);
+        fitted.renderFrame();
+        ASSERT_EQ(fitted.volumes()->grid.voxelSize, c.grid.voxelSize);
+        const std::vector<uint32_t> ic = vxgi::readVoxelIndex(context(), c);
+        const std::vector<uint32_t> iff = vxgi::readVoxelIndex(context(), *fitted.volumes());
+        const vxgi::DenseAttributes dc = vxgi::readAttributes(context(), c);
+        const vxgi::DenseAttributes df = vxgi::readAttributes(context(), *fitted.volumes());
+        const int n = int(kN);
+        size_t occupied = 0, differ = 0, sums = 0, atFaces = 0;
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const glm::ivec3 st = (glm::ivec3(x, y, z) + c.grid.wrap) % n;
+                    const size_t of = size_t(x) + size_t(n) * (size_t(y) + size_t(n) * size_t(z));
+                    const size_t oc = size_t(st.x) + size_t(n) * (size_t(st.y) + size_t(n) * size_t(st.z));
+                    const bool a = sh::indexSlot(ic[oc]) != 0, b = sh::indexSlot(iff[of]) != 0;
+                    occupied += a;
+                    differ += a != b;
+                    const bool face = x == 0 || y == 0 || z == 0 || x == n - 1 || y == n - 1 || z == n - 1;
+                    atFaces += a && face;
+                    for (uint32_t ch = 0; ch < sh::VOXEL_CHANNELS; ++ch) {
+                        const float va = dc.at(st.x, st.y, st.z, ch), vb = df.at(x, y, z, ch);
+                        sums += std::abs(va - vb) > 1e-4f * std::max(1.0f, std::abs(vb));
+                    }
+                }
+        // The list: every live entry unique, one per occupied voxel.
+        const std::vector<uint8_t> bytes = gpu::readbackBuffer(context(), c.list);
+        sh::VoxelListHeader h;
+        std::memcpy(&h, bytes.data(), sizeof(h));
+        const uint32_t* entries = reinterpret_cast<const uint32_t*>(bytes.data() + sizeof(h));
+        std::set<uint32_t> seen;
+        size_t live = 0;
+        for (uint32_t i = 0; i < h.counts.x; ++i)
+            if (entries[i] != sh::VOXEL_LIST_FREE) {
+                ++live;
+                seen.insert(entries[i]);
+            }
+        std::printf("  level %zu: %zu voxels (%zu on the window's faces), wrap (%d, %d, %d), %zu list entries\n", l,
+                    occupied, atFaces, c.grid.wrap.x, c.grid.wrap.y, c.grid.wrap.z, live);
+        EXPECT_GT(occupied, 100u);
+        EXPECT_EQ(differ, 0u);
+        EXPECT_EQ(sums, 0u);
+        EXPECT_EQ(live, occupied);
+        EXPECT_EQ(seen.size(), live);
+    }
+}
+
+double luminance(const float* c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
+
+// The largest change of the indirect term between neighbouring pixels of the
+// image's middle rows, relative to the mean there.
+double largestStep(const image::ImageRGBA32F& img) {
+    double sum = 0.0, worst = 0.0;
+    size_t count = 0;
+    for (uint32_t y = img.height / 4; y < 3 * img.height / 4; ++y)
+        for (uint32_t x = 0; x < img.width; ++x) {
+            const float* c = img.rgba.data() + 4 * (size_t(y) * img.width + x);
+            sum += luminance(c);
+            ++count;
+            if (x > 0) worst = std::max(worst, std::abs(luminance(c) - luminance(c - 4)));
+        }
+    return worst / (sum / double(count));
+}
+
+// A small lit room seen from above with a wide lens: it lies inside level 1's
+// window (2 m, voxels of 1/16 m) and crosses level 0's faces (1 m, 1/32 m) at
+// x = +-0.5 m, so the rows of the indirect term go from level 0 through the
+// blend band into level 1. The largest step between neighbouring pixels stays
+// near what a fitted grid at level 1's voxel (which has no border) shows.
+TEST_F(Clipmap, IndirectLightIsContinuousAcrossALevelBorder) {
+    scene::Scene s;
+    const int grey = addMaterial(s, glm::vec3(0.7f));
+    const int wall = addMaterial(s, glm::vec3(0.9f, 0.5f, 0.3f));
+    const float q = glm::half_pi<float>();
+    addQuad(s, grey, glm::vec3(0.0f, 0.0f, 0.0f), 0.7f);
+    addQuad(s, wall, glm::vec3(0.0f, 0.0f, -0.6f), 0.7f, glm::angleAxis(q, glm::vec3(1, 0, 0)));
+    addTopDownCamera(s, 0.25f, glm::radians(140.0f));
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    sun.intensity = 3.0f;
+    addLight(s, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::normalize(glm::vec3(0.2f, -1.0f, -0.6f)));
+    render::RenderSettings rs = clipSettings(2);
+    rs.clipmap.voxelSize = kVoxel / 2.0f;
+    rs.width = rs.height = 64;
+    rs.outputTerm = sh::TERM_INDIRECT;
+    const image::ImageRGBA32F clip = render(s, rs);
+    render::RenderSettings fs = rs;
+    fs.clipmap.levels = 0;
+    fs.hasVoxelBox = true;
+    fs.voxelBoxMin = glm::vec3(-1.0f);
+    fs.voxelBoxMax = glm::vec3(1.0f);
+    fs.voxels = 32;  // 1/16 m voxels: level 1's
+    const image::ImageRGBA32F fitted = render(s, fs);
+    if (const char* dump = std::getenv("DVSGI_CLIPMAP_DUMP")) {
+        image::writeExr(std::string(dump) + "-clip.exr", clip);
+        image::writeExr(std::string(dump) + "-fitted.exr", fitted);
+    }
+    const double stepClip = largestStep(clip), stepFitted = largestStep(fitted);
+    std::printf("  largest step between neighbouring pixels / mean: clipmap %.3f, fitted grid %.3f\n", stepClip,
+                stepFitted);
+    EXPECT_LE(stepClip, 1.5 * stepFitted);
+}
+
+// Switching the only light off with the clipmap (feedback bounces): the
+// indirect light falls below 1 % of its lit value within kFrames frames.
+TEST_F(Clipmap, SwitchedOffLightLeavesNoGhost) {
+    constexpr int kFrames = 10;
+    render::RenderSettings rs = clipSettings(2);
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Converge;
+    render::Renderer r(context(), spreadScene(false), rs);
+    for (int f = 0; f < 4; ++f) r.renderFrame();
+    auto indirect = [&] {
+        const image::ImageRGBA32F img = r.readTerm(sh::TERM_INDIRECT);
+        double sum = 0.0;
+        for (size_t p = 0; p < img.pixelCount(); ++p) sum += luminance(img.rgba.data() + 4 * p);
+        return sum / double(img.pixelCount());
+    };
+    const double lit = indirect();
+    ASSERT_GT(lit, 0.0);
+    r.scene().lights[0].intensity = 0.0f;
+    r.sceneChanged();
+    int frames = 0;
+    double left = lit;
+    while (left >= 0.01 * lit && frames < 3 * kFrames) {
+        r.renderFrame();
+        ++frames;
+        left = indirect();
+    }
+    std::printf("  indirect %.5f lit, below 1 %% after %d frame(s) off (%.2e left)\n", lit, frames, left);
+    EXPECT_LE(frames, kFrames);
+}
+
+}  // namespace
+}  // namespace dvsgi::test
