@@ -17,7 +17,7 @@ layout(local_size_x = VOXEL_LIST_GROUP) in;
 // One clipmap level's voxels; cones trace every level from theirs up.
 layout(set = 0, binding = BIND_BOUNCE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CONE_GRID) uniform Levels { ConeLevels clip; };
-layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalLevels[MAX_CLIP_LEVELS];
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalAtlas;
 #define CONE_FIRST_LEVEL int(pc.flags.y)
 #else
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };

@@ -17,8 +17,8 @@ layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;
 int coneFirst = 0;
 #define CONE_FIRST_LEVEL coneFirst
 layout(set = 0, binding = BIND_CONE_GRID) uniform Levels { ConeLevels clip; };
-layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceLevels[MAX_CLIP_LEVELS];
-layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalLevels[MAX_CLIP_LEVELS];
+layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceAtlas;
+layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalAtlas;
 #else
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_GATHER_RADIANCE) uniform sampler3D radianceVolume;

@@ -119,7 +119,7 @@ DVSGI_CONST(uint, BIND_CONE_GRID, 0);
 DVSGI_CONST(uint, BIND_CONE_RADIANCE, 1);     // sampled, trilinear
 DVSGI_CONST(uint, BIND_CONE_DIRECTIONAL, 2);  // sampled, trilinear + mips: the six volumes' atlas
 // With DVSGI_CLIPMAP: BIND_CONE_GRID holds ConeLevels, and the sampled
-// volumes are arrays of MAX_CLIP_LEVELS (unused ones repeat the last level).
+// volumes are the clipmap's atlases (levels stacked along z).
 
 DVSGI_END
 

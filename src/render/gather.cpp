@@ -48,7 +48,6 @@ GatherPass::GatherPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::GatherPush);
     layout.pushConstantStages = cs;
     gather_ = gpu::Pipeline(ctx, gpu::Spirv(kGather), layout, "cone tracing");
-    layout.bindings[1].count = layout.bindings[2].count = sh::MAX_CLIP_LEVELS;
     clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
 
     gpu::LayoutDesc up;
@@ -81,8 +80,8 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .image(v.radiance, gpu::use::ComputeRead);
         tracker.image(v.directional, gpu::use::ComputeRead);
         if (in.clip)
-            for (const vxgi::VoxelVolumes* l : in.clip->volumes)
-                tracker.image(l->radiance, gpu::use::ComputeRead).image(l->directional, gpu::use::ComputeRead);
+            tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
+                .image(in.clip->atlases.directional, gpu::use::ComputeRead);
         tracker.image(outD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
         const VkSampler volumeSampler = in.samplers.volume.handle();
         const gpu::Pipeline& pipeline = in.clip ? clipGather_ : gather_;
@@ -90,10 +89,10 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
         gpu::Descriptors d;
         if (in.clip) {
             d.uniformBuffer(sh::BIND_CONE_GRID, in.clip->levels.handle())
-                .sampledImages(sh::BIND_GATHER_RADIANCE, in.clip->radianceViews(), volumeSampler,
-                               VK_IMAGE_LAYOUT_GENERAL)
-                .sampledImages(sh::BIND_CONE_DIRECTIONAL, in.clip->directionalViews(), volumeSampler,
-                               VK_IMAGE_LAYOUT_GENERAL);
+                .sampledImage(sh::BIND_GATHER_RADIANCE, in.clip->atlases.radiance.view(), volumeSampler,
+                              VK_IMAGE_LAYOUT_GENERAL)
+                .sampledImage(sh::BIND_CONE_DIRECTIONAL, in.clip->atlases.directional.view(), volumeSampler,
+                              VK_IMAGE_LAYOUT_GENERAL);
         } else {
             d.uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
                 .sampledImage(sh::BIND_GATHER_RADIANCE, v.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
@@ -108,7 +107,7 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .push(ctx_, cmd, pipeline);
         sh::GatherPush push{};
         // Cones may run as far as the largest grid reaches.
-        push.cone = vxgi::gpuCone(cone, in.clip ? in.clip->volumes.back()->grid : v.grid);
+        push.cone = vxgi::gpuCone(cone, in.clip ? in.clip->coarsest : v.grid);
         push.params = glm::vec4(0.0f, s.aoLambda, 0.0f, std::tan(glm::radians(s.minSpecularDegrees)));
         push.flags = glm::uvec4(0u, s.specular ? 1u : 0u, traceWidth, traceHeight);
         gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);

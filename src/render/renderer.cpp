@@ -220,7 +220,7 @@ void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
     } else {
         // Every level's voxels trace from their level up, through the windows
         // the directional volumes were filtered in; statistics: level 0's.
-        const vxgi::ClipTrace trace{*directionalLevels_, levels};
+        const vxgi::ClipTrace trace{*directionalLevels_, *atlases_, levels.back()->grid};
         for (size_t l = 0; l < levels.size(); ++l)
             bounce_->record(cmd, tracker_, *levels[l], samplers_->volume.handle(), cone,
                             withStats && l == 0 ? bounceStats_.get() : nullptr, t, &trace, uint32_t(l));
@@ -306,8 +306,10 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
-        const vxgi::ClipTrace trace{coneLevels_ ? *coneLevels_ : *frame_, levelVolumes()};
-        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, clip_.empty() ? nullptr : &trace};
+        const std::optional<vxgi::ClipTrace> trace =
+            clip_.empty() ? std::nullopt
+                          : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});
+        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
                                 f.reducedTrace() ? &f.traceSpecular : nullptr};
         gather_->record(cmd, tracker_, in, out, settings_.gather, settings_.cones, t);

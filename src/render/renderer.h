@@ -234,6 +234,7 @@ private:
     // shader::ConeLevels of this frame's windows, and of the windows the
     // directional volumes were filtered in (last frame's until this frame filters).
     std::unique_ptr<gpu::Buffer> coneLevels_, coneHistory_;
+    std::unique_ptr<vxgi::ClipAtlases> atlases_;  // what the clipmap's cones sample, filled after filtering
     shader::ConeLevels coneLevelsHost_{};
     const gpu::Buffer* directionalLevels_ = nullptr;
     std::unique_ptr<GatherPass> gather_;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "gpu/context.h"
+#include "gpu/timers.h"
 #include "gpu/tracker.h"
 #include "gpuscene/scene_gpu.h"
 #include "shared/voxel_list_pass.h"
@@ -79,6 +80,12 @@ void Renderer::createClipmap() {
     scroll_ = std::make_unique<vxgi::ClipScrollPass>(ctx_);
     coneLevels_ = coneLevelsBuffer(ctx_, "clipmap levels");
     coneHistory_ = coneLevelsBuffer(ctx_, "clipmap levels (filtered)");
+    atlases_ = std::make_unique<vxgi::ClipAtlases>(ctx_, s.voxels, levels);
+    // Zeroed once; every filtering then rewrites each level's slab.
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        clearImage(cmd, tracker_, atlases_->radiance);
+        clearImage(cmd, tracker_, atlases_->directional);
+    });
 }
 
 // A level voxelized from scratch at windowMin: what it held is cleared (with
@@ -133,7 +140,11 @@ void Renderer::recordClipmapVoxels(VkCommandBuffer cmd) {
 }
 
 void Renderer::recordFilter(VkCommandBuffer cmd, const char* timer) {
-    for (const vxgi::VoxelVolumes* v : levelVolumes()) aniso_->record(cmd, tracker_, *v, timers_.get(), timer);
+    const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
+    for (const vxgi::VoxelVolumes* v : levels) aniso_->record(cmd, tracker_, *v, timers_.get(), timer);
+    if (clip_.empty()) return;
+    gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");
+    for (size_t l = 0; l < levels.size(); ++l) vxgi::recordAtlasCopy(cmd, tracker_, *levels[l], uint32_t(l), *atlases_);
     directionalLevels_ = coneLevels_.get();
 }
 

@@ -59,6 +59,7 @@ std::vector<MemoryItem> Renderer::memory() const {
                              v.index.size() + v.accum.memorySize() + v.radiance.memorySize() + v.direct.memorySize() +
                                  v.directional.memorySize() + v.list.size()});
         }
+        if (atlases_) items.push_back({"clipmap atlases (radiance, directional)", atlases_->bytes()});
         if (pv_) items.push_back({"pv last frame's attributes and list", pv_->memoryBytes()});
         uint64_t rsm = 0, around = 0;
         for (const PvView& v : rsm_) rsm += v.gbuffer.memoryBytes();

@@ -39,7 +39,6 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
-    layout.bindings[1].count = sh::MAX_CLIP_LEVELS;
     layout.bindings.push_back({sh::BIND_BOUNCE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs});
     clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
@@ -53,8 +52,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
     tracker.image(v.directional, gpu::use::ComputeRead);
-    if (clip)
-        for (const VoxelVolumes* l : clip->volumes) tracker.image(l->directional, gpu::use::ComputeRead);
+    if (clip) tracker.image(clip->atlases.directional, gpu::use::ComputeRead);
     // Read and written: the statistics compare each voxel with its value before.
     tracker.image(v.radiance, gpu::use::ComputeReadWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeRead);
@@ -71,7 +69,8 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     if (clip) {
         d.uniformBuffer(sh::BIND_CONE_GRID, clip->levels.handle())
             .uniformBuffer(sh::BIND_BOUNCE_GRID, v.gridBuffer.handle())
-            .sampledImages(sh::BIND_CONE_DIRECTIONAL, clip->directionalViews(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL);
+            .sampledImage(sh::BIND_CONE_DIRECTIONAL, clip->atlases.directional.view(), volumeSampler,
+                          VK_IMAGE_LAYOUT_GENERAL);
     } else {
         d.uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
             .sampledImage(sh::BIND_CONE_DIRECTIONAL, v.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL);
@@ -82,7 +81,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
         .push(ctx_, cmd, pipeline);
-    const sh::BouncePush push{gpuCone(cone, clip ? clip->volumes.back()->grid : v.grid), glm::uvec4(stats ? 1u : 0u, level, 0u, 0u)};
+    const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid), glm::uvec4(stats ? 1u : 0u, level, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
     if (stats) tracker.buffer(*stats, gpu::use::HostRead).flush(cmd);

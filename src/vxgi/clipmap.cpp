@@ -58,18 +58,44 @@ sh::ConeLevels coneLevels(const std::vector<const VoxelVolumes*>& levels) {
     return c;
 }
 
-std::vector<VkImageView> ClipTrace::radianceViews() const {
-    std::vector<VkImageView> views;
-    for (uint32_t l = 0; l < sh::MAX_CLIP_LEVELS; ++l)
-        views.push_back(volumes[std::min<size_t>(l, volumes.size() - 1)]->radiance.view());
-    return views;
+ClipAtlases::ClipAtlases(const gpu::Context& ctx, uint32_t n, uint32_t levels) {
+    gpu::ImageDesc d;
+    d.type = VK_IMAGE_TYPE_3D;
+    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    d.extent = {n, n, n * levels};
+    d.name = "clipmap radiance atlas";
+    radiance = gpu::Image(ctx, d);
+    d.extent = {sh::DIRECTIONAL_VOLUMES * (n / 2), n / 2, (n / 2) * levels};
+    d.mipLevels = directionalMipCount(n);
+    d.name = "clipmap directional atlas";
+    directional = gpu::Image(ctx, d);
 }
 
-std::vector<VkImageView> ClipTrace::directionalViews() const {
-    std::vector<VkImageView> views;
-    for (uint32_t l = 0; l < sh::MAX_CLIP_LEVELS; ++l)
-        views.push_back(volumes[std::min<size_t>(l, volumes.size() - 1)]->directional.view());
-    return views;
+void recordAtlasCopy(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, uint32_t l,
+                     const ClipAtlases& atlases) {
+    tracker.image(v.radiance, gpu::use::CopySrcGeneral).image(v.directional, gpu::use::CopySrcGeneral);
+    // Each level's slab is written whole: the rest of the atlas keeps its contents.
+    tracker.image(atlases.radiance, gpu::use::CopyDstGeneral).image(atlases.directional, gpu::use::CopyDstGeneral);
+    tracker.flush(cmd);
+    const uint32_t n = v.grid.n;
+    VkImageCopy r{};
+    r.srcSubresource = r.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    r.dstOffset = {0, 0, int32_t(n * l)};
+    r.extent = {n, n, n};
+    vkCmdCopyImage(cmd, v.radiance.handle(), VK_IMAGE_LAYOUT_GENERAL, atlases.radiance.handle(),
+                   VK_IMAGE_LAYOUT_GENERAL, 1, &r);
+    std::vector<VkImageCopy> mips;
+    for (uint32_t k = 0; k < v.directionalMips; ++k) {
+        const uint32_t side = std::max(1u, (n / 2) >> k);
+        VkImageCopy m{};
+        m.srcSubresource = m.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, k, 0, 1};
+        m.dstOffset = {0, 0, int32_t(side * l)};
+        m.extent = {sh::DIRECTIONAL_VOLUMES * side, side, side};
+        mips.push_back(m);
+    }
+    vkCmdCopyImage(cmd, v.directional.handle(), VK_IMAGE_LAYOUT_GENERAL, atlases.directional.handle(),
+                   VK_IMAGE_LAYOUT_GENERAL, uint32_t(mips.size()), mips.data());
 }
 
 ClipScrollPass::ClipScrollPass(const gpu::Context& ctx) : ctx_(ctx) {

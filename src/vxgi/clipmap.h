@@ -47,13 +47,26 @@ GridSpec clipLevelGrid(const glm::ivec3& windowMin, float voxelSize, uint32_t n)
 // What a clipmap cone tracer reads of the levels (level 0 first).
 shader::ConeLevels coneLevels(const std::vector<const VoxelVolumes*>& levels);
 
-// The inputs of a cone tracer over clipmap levels: ConeLevels and the levels'
-// volumes (the sampled arrays repeat the last level up to MAX_CLIP_LEVELS).
+// The levels' dense volumes stacked along z, level l at z = l x its depth
+// (radiance N x N x L N; directional 6 (N/2) x N/2 x L N/2 with the levels'
+// mips): what a clipmap cone tracer samples, so that it picks a level by
+// arithmetic instead of by a branch per level (lib/cone_trace.glsl).
+struct ClipAtlases {
+    ClipAtlases(const gpu::Context& ctx, uint32_t n, uint32_t levels);
+    gpu::Image radiance, directional;
+    uint64_t bytes() const { return radiance.memorySize() + directional.memorySize(); }
+};
+// Copies level l's radiance and directional volumes (every mip) into the
+// atlases; the level's volumes are left in gpu::use::CopySrcGeneral.
+void recordAtlasCopy(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& level, uint32_t l,
+                     const ClipAtlases& atlases);
+
+// The inputs of a cone tracer over clipmap levels: their grids
+// (shader::ConeLevels) and the atlases filled from the same frame.
 struct ClipTrace {
     const gpu::Buffer& levels;
-    std::vector<const VoxelVolumes*> volumes;
-    std::vector<VkImageView> radianceViews() const;
-    std::vector<VkImageView> directionalViews() const;
+    const ClipAtlases& atlases;
+    const GridSpec& coarsest;  // how far cones may run
 };
 
 // Frees a level's static voxels that a move of its window from oldMin to
