@@ -125,6 +125,24 @@ print("%-34s rc=%d moved %s" % ("--camera-path walk", rc, moved))
 if rc != 0 or not moved:
     failures.append("--camera-path walk: rc=%d, frames differ: %s %s" % (rc, moved, se))
 
+# Clipmaps: combinations it does not support and absurd values are named; a walk with two levels
+# renders (validation on) and scrolls.
+expect_error("--clipmap with pv", ["render", "--clipmap", "2", "--voxelizer", "pv", "--width", "8", "--height", "8",
+                                   "--out", out], "--clipmap")
+expect_error("--clipmap with --voxel-box", ["render", "--clipmap", "2", "--voxel-box", "-1,-1,-1,1,1,1", "--width", "8",
+                                            "--height", "8", "--out", out], "--clipmap")
+expect_error("absurd --clipmap", ["render", "--clipmap", "9"], "--clipmap")
+expect_error("negative --clipmap-voxel", ["render", "--clipmap-voxel", "-1"], "--clipmap-voxel")
+checks += 1
+clip_frames = os.path.join(TMP, "clip_#.exr")
+rc, so, se = run("render", "--width", "32", "--height", "32", "--voxels", "32", "--clipmap", "2", "--frames", "2",
+                 "--time-step", "0.1", "--camera-path", walk, "--out", clip_frames, "--png", "none", "--validate")
+clip_paths = [os.path.join(TMP, "clip_%d.exr" % i) for i in range(2)]
+ok = rc == 0 and all(os.path.exists(f) for f in clip_paths) and "voxel clipmap: 2 levels" in so
+print("%-34s rc=%d %s" % ("--clipmap 2 walk", rc, "ok" if ok else se))
+if not ok:
+    failures.append("--clipmap 2 walk: rc=%d stdout=%r stderr=%r" % (rc, so[-400:], se))
+
 # Several frames with an added moving model, every frame written; a voxel view; single terms.
 checks += 3
 bunny = os.path.join(os.path.dirname(__file__), "../../../shared/scenes/stanford-bunny/bun_zipper_res2.ply")
