@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_data.h"
 #include "shared/voxelize_pass.h"
+#include "shared/voxel_list_pass.h"
 
 // Projects each triangle along its dominant axis onto an N x N viewport (one
 // pixel per voxel column) and, without hardware conservative rasterization,
@@ -26,6 +27,8 @@ layout(location = 3) flat out uint outAxis;
 layout(location = 4) flat out vec4 outAabb;    // xy min, zw max (pixels), already grown by half a pixel
 layout(location = 5) flat out vec3 outTri[3];  // the projected triangle: xy pixels, z depth (voxel units)
 
+#include "lib/voxel_window.glsl"
+
 // Half a pixel plus a margin (VoxelizePush.mode.z, float bits) of two steps
 // of the rasterizer's sub-pixel grid. Vertices are snapped to that grid, so a
 // triangle that only touches a pixel's border, or passes within a snap step of
@@ -47,6 +50,10 @@ void main() {
     vec3 faceNormal = cross(inVoxel[1] - inVoxel[0], inVoxel[2] - inVoxel[0]);
     vec3 an = abs(faceNormal);
     if (max(an.x, max(an.y, an.z)) < 1e-12) return;  // degenerate triangle
+    // After a clipmap scroll, static voxelization skips a triangle whose
+    // dilated box lies in the part of the window the scroll kept.
+    vec3 lo3 = min(inVoxel[0], min(inVoxel[1], inVoxel[2])), hi3 = max(inVoxel[0], max(inVoxel[1], inVoxel[2]));
+    if (pc.mode.x != VOXELIZE_DYNAMIC && rangeKeptByScroll(ivec3(floor(lo3)) - 1, ivec3(floor(hi3)) + 1)) return;
     uint axis = (an.x >= an.y && an.x >= an.z) ? 0u : (an.y >= an.z ? 1u : 2u);
 
     vec3 q[3];

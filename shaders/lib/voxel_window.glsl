@@ -17,5 +17,12 @@ bool keptByScroll(ivec3 v) {
     return grid.keep.w != 0 && all(greaterThanEqual(v, grid.keep.xyz)) &&
            all(lessThan(v, grid.keep.xyz + int(grid.dims.x)));
 }
+// The closed voxel range [a, b] lies wholly in the kept box: a triangle
+// whose range it is adds nothing to static voxelization after a scroll, so the
+// voxelizers skip it before any per-voxel work.
+bool rangeKeptByScroll(ivec3 a, ivec3 b) {
+    return grid.keep.w != 0 && all(greaterThanEqual(a, grid.keep.xyz)) &&
+           all(lessThan(b, grid.keep.xyz + int(grid.dims.x)));
+}
 
 #endif
