@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""Ten Sponzas in a 5 x 2 grid, rendered with a clipmap, against one Sponza (docs/clipmap.md).
+
+Writes OUT_DIR/sponza-10x.gltf: sponza-sun.gltf's JSON with nine more instances of its mesh
+(`spacing` metres apart), its buffer and textures referenced where they lie in SHARED_DIR (nothing
+is copied), the camera and the sun unchanged, so the camera stands in the first Sponza. Then
+renders the indirect term from that camera:
+  - one Sponza, fitted 128^3 grid (voxels of 0.338 m);
+  - one Sponza, --clipmap L at level-0 voxels of the same edge;
+  - ten Sponzas, the same clipmap (a fitted 128^3 grid on them would have voxels of 1.6 m);
+and prints the relative RMSE and mean-luminance ratio of each against the others
+(../shared/tools/compare.py), with each run's voxel grid.
+
+usage: scripts/sponza-10x.py [BUILD_DIR] [SHARED_DIR] [OUT_DIR] [LEVELS]
+"""
+import json
+import os
+import subprocess
+import sys
+
+build = sys.argv[1] if len(sys.argv) > 1 else "build"
+shared = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else "../shared")
+out = sys.argv[3] if len(sys.argv) > 3 else "out/sponza-10x"
+levels = sys.argv[4] if len(sys.argv) > 4 else "4"
+os.makedirs(out, exist_ok=True)
+source_dir = os.path.join(shared, "scenes/crytek-sponza")
+source = os.path.join(source_dir, "sponza-sun.gltf")
+compare = os.path.join(shared, "tools/compare.py")
+
+with open(source) as f:
+    g = json.load(f)
+rel = os.path.relpath(source_dir, os.path.abspath(out))
+for b in g["buffers"]:
+    b["uri"] = os.path.join(rel, b["uri"])
+for im in g.get("images", []):
+    im["uri"] = os.path.join(rel, im["uri"])
+spacing = (60.0, 40.0)  # x, z: Sponza spans 37.2 m x 22.9 m
+mesh_node = next(i for i, n in enumerate(g["nodes"]) if "mesh" in n)
+for i in range(5):
+    for j in range(2):
+        if i == 0 and j == 0:
+            continue
+        g["nodes"].append({"name": "sponza-%d-%d" % (i, j), "mesh": g["nodes"][mesh_node]["mesh"],
+                           "translation": [spacing[0] * i, 0.0, spacing[1] * j]})
+        g["scenes"][g.get("scene", 0)]["nodes"].append(len(g["nodes"]) - 1)
+big = os.path.join(out, "sponza-10x.gltf")
+with open(big, "w") as f:
+    json.dump(g, f)
+
+# The fitted 128^3 grid's voxel on one Sponza: its longest side plus 9 voxels of margin, over 128.
+voxel = "%.6f" % ((17.999 + 19.209) / (128 - 9))
+common = ["--width", "320", "--height", "180", "--output", "indirect", "--voxels", "128", "--shadow-map", "4096"]
+runs = [
+    ("one Sponza, fitted 128^3", "one-fitted", source, []),
+    ("one Sponza, clipmap", "one-clipmap", source, ["--clipmap", levels, "--clipmap-voxel", voxel]),
+    ("ten Sponzas, clipmap", "ten-clipmap", big, ["--clipmap", levels, "--clipmap-voxel", voxel]),
+]
+for label, name, scene, extra in runs:
+    p = subprocess.run([os.path.join(build, "dvsgi"), "render", scene, *common, *extra,
+                        "--out", os.path.join(out, name + ".exr")], check=True, capture_output=True, text=True)
+    grid = [l for l in p.stdout.splitlines() if l.startswith("voxel grid") or l.startswith("voxel clipmap")]
+    print("%s: %s" % (label, " | ".join(grid)))
+
+
+def metrics(a, b):
+    js = os.path.join(out, "%s-vs-%s.json" % (a, b))
+    subprocess.run([sys.executable, compare, os.path.join(out, a + ".exr"), os.path.join(out, b + ".exr"),
+                    "--json", js, "--panel-png", os.path.join(out, "%s-vs-%s.png" % (a, b))],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(js) as f:
+        return json.load(f)
+
+
+print("| candidate | reference | relative RMSE | mean luminance ratio |")
+print("|---|---|---|---|")
+for a, b in [("ten-clipmap", "one-clipmap"), ("ten-clipmap", "one-fitted"), ("one-clipmap", "one-fitted")]:
+    m = metrics(a, b)
+    print("| %s | %s | %.3f | %.3f |" % (a, b, m["rel_rmse"], m["mean_lum_ratio"]))
