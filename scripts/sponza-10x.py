@@ -2,8 +2,8 @@
 """Ten Sponzas in a 5 x 2 grid, rendered with a clipmap, against one Sponza (docs/clipmap.md).
 
 Writes OUT_DIR/sponza-10x.gltf: sponza-sun.gltf's JSON with nine more instances of its mesh
-(`spacing` metres apart), its buffer and textures referenced where they lie in SHARED_DIR (nothing
-is copied), the camera and the sun unchanged, so the camera stands in the first Sponza. Then
+(`spacing` metres apart), its buffer and textures hard-linked from SHARED_DIR (copied only across
+file systems; OUT_DIR is never committed), the camera and the sun unchanged, so the camera stands in the first Sponza. Then
 renders the indirect term from that camera:
   - one Sponza, fitted 128^3 grid (voxels of 0.338 m);
   - one Sponza, --clipmap L at level-0 voxels of the same edge;
@@ -15,6 +15,7 @@ usage: scripts/sponza-10x.py [BUILD_DIR] [SHARED_DIR] [OUT_DIR] [LEVELS]
 """
 import json
 import os
+import shutil
 import subprocess
 import sys
 
@@ -29,11 +30,19 @@ compare = os.path.join(shared, "tools/compare.py")
 
 with open(source) as f:
     g = json.load(f)
-rel = os.path.relpath(source_dir, os.path.abspath(out))
-for b in g["buffers"]:
-    b["uri"] = os.path.join(rel, b["uri"])
-for im in g.get("images", []):
-    im["uri"] = os.path.join(rel, im["uri"])
+# dvsgi reads only files inside a scene's folder (symbolic links resolved): hard-link the buffer and
+# the textures in, or copy them where the folders lie on different file systems (out/ only; never
+# committed).
+files = [b["uri"] for b in g["buffers"]] + [im["uri"] for im in g.get("images", [])]
+for name in files:
+    dst = os.path.join(out, name)
+    if os.path.exists(dst):
+        continue
+    os.makedirs(os.path.dirname(dst) or ".", exist_ok=True)
+    try:
+        os.link(os.path.join(source_dir, name), dst)
+    except OSError:
+        shutil.copyfile(os.path.join(source_dir, name), dst)
 spacing = (60.0, 40.0)  # x, z: Sponza spans 37.2 m x 22.9 m
 mesh_node = next(i for i, n in enumerate(g["nodes"]) if "mesh" in n)
 for i in range(5):

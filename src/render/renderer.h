@@ -137,6 +137,8 @@ public:
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
     std::vector<const vxgi::VoxelVolumes*> levelVolumes() const;
+    // --clipmap: what its cones sample (left in gpu::use::ComputeRead after a frame); else null.
+    const vxgi::ClipAtlases* clipAtlases() const { return atlases_.get(); }
     const vxgi::Voxelizer* voxelizer() const { return voxelizer_.get(); }
     const vxgi::InjectPass* injectPass() const { return inject_.get(); }
     const vxgi::BouncePass* bouncePass() const { return bounce_.get(); }
@@ -230,6 +232,7 @@ private:
         bool placed = false;  // voxelized at windowMin (else: from scratch next frame)
     };
     std::vector<ClipLevel> clip_;
+    glm::vec3 clipLattice_{0.0f};  // vxgi::clipLattice: where every level's voxels start
     std::unique_ptr<vxgi::ClipScrollPass> scroll_;
     // shader::ConeLevels of this frame's windows, and of the windows the
     // directional volumes were filtered in (last frame's until this frame filters).

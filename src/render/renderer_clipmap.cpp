@@ -65,10 +65,11 @@ void Renderer::createClipmap() {
         throw std::runtime_error("clipmap: not with --shadows cone (shadow cones trace one grid)");
     const float base = s.clipmap.voxelSize > 0.0f ? s.clipmap.voxelSize
                                                    : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, s.voxels, levels);
+    clipLattice_ = vxgi::clipLattice(sceneGpu_->bounds, base);
     clip_.resize(levels);
     for (uint32_t l = 0; l < levels; ++l) {
         const float size = base * float(1u << l);
-        const vxgi::GridSpec grid = vxgi::clipLevelGrid(glm::ivec3(0), size, s.voxels);
+        const vxgi::GridSpec grid = vxgi::clipLevelGrid(glm::ivec3(0), clipLattice_, size, s.voxels);
         if (l == 0) {
             volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, s.voxelSlots);
         } else {
@@ -96,7 +97,7 @@ void Renderer::recordClipmapStatic(VkCommandBuffer cmd, size_t l, const glm::ive
     vxgi::VoxelVolumes& v = level(l);
     voxelizer_->clearOccupied(cmd, tracker_, v, t);
     list_->reset(cmd, tracker_, v);
-    v.setGrid(cmd, tracker_, vxgi::clipLevelGrid(windowMin, v.grid.voxelSize, v.grid.n), glm::ivec4(0));
+    v.setGrid(cmd, tracker_, vxgi::clipLevelGrid(windowMin, clipLattice_, v.grid.voxelSize, v.grid.n), glm::ivec4(0));
     clearImage(cmd, tracker_, v.radiance);
     voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, v, vxgi::VoxelizeMode::Static, t);
     list_->finish(cmd, tracker_, v, true);
@@ -113,7 +114,7 @@ void Renderer::recordClipmapVoxels(VkCommandBuffer cmd) {
     for (size_t l = 0; l < clip_.size(); ++l) {
         vxgi::VoxelVolumes& v = level(l);
         ClipLevel& c = clip_[l];
-        const glm::ivec3 want = vxgi::clipWindowMin(eye, v.grid.voxelSize, v.grid.n);
+        const glm::ivec3 want = vxgi::clipWindowMin(eye, clipLattice_, v.grid.voxelSize, v.grid.n);
         if (staticDirty_ || !c.placed) {
             recordClipmapStatic(cmd, l, want);
         } else {
@@ -123,7 +124,7 @@ void Renderer::recordClipmapVoxels(VkCommandBuffer cmd) {
                 // Toroidal storage: the voxels that stay keep their slots;
                 // only the exposed slabs are voxelized.
                 scroll_->record(cmd, tracker_, v, c.windowMin, want, t);
-                v.setGrid(cmd, tracker_, vxgi::clipLevelGrid(want, v.grid.voxelSize, v.grid.n),
+                v.setGrid(cmd, tracker_, vxgi::clipLevelGrid(want, clipLattice_, v.grid.voxelSize, v.grid.n),
                           glm::ivec4(c.windowMin - want, 1));
                 clearImage(cmd, tracker_, v.radiance);
                 voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, v, vxgi::VoxelizeMode::Static, t);
@@ -145,6 +146,7 @@ void Renderer::recordFilter(VkCommandBuffer cmd, const char* timer) {
     if (clip_.empty()) return;
     gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");
     for (size_t l = 0; l < levels.size(); ++l) vxgi::recordAtlasCopy(cmd, tracker_, *levels[l], uint32_t(l), *atlases_);
+    vxgi::recordAtlasFold(cmd, tracker_, levels, *atlases_);
     directionalLevels_ = coneLevels_.get();
 }
 

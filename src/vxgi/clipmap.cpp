@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "gpu/barriers.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "gpu/tracker.h"
@@ -31,18 +32,25 @@ float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels
     return 2.0f * side / (float(n) * std::ldexp(1.0f, int(levels) - 1));
 }
 
-glm::ivec3 clipWindowMin(const glm::vec3& centre, float voxelSize, uint32_t n) {
+glm::vec3 clipLattice(const scene::Bounds& bounds, float voxelSize0) {
+    if (!bounds.valid()) return glm::vec3(0.0f);
+    // Reduced modulo the voxel so the origin stays near 0 (float precision).
+    const glm::vec3 o = bounds.min - 0.5f * voxelSize0;
+    return o - voxelSize0 * glm::floor(o / voxelSize0);
+}
+
+glm::ivec3 clipWindowMin(const glm::vec3& centre, const glm::vec3& lattice, float voxelSize, uint32_t n) {
     glm::ivec3 m;
     for (int a = 0; a < 3; ++a) {
-        const double lowest = std::floor(double(centre[a]) / double(voxelSize)) - double(n / 2);
+        const double lowest = std::floor(double(centre[a] - lattice[a]) / double(voxelSize)) - double(n / 2);
         m[a] = floorDiv(int(lowest) + kClipSnapVoxels / 2, kClipSnapVoxels) * kClipSnapVoxels;
     }
     return m;
 }
 
-GridSpec clipLevelGrid(const glm::ivec3& windowMin, float voxelSize, uint32_t n) {
+GridSpec clipLevelGrid(const glm::ivec3& windowMin, const glm::vec3& lattice, float voxelSize, uint32_t n) {
     GridSpec g;
-    g.origin = glm::vec3(windowMin) * voxelSize;
+    g.origin = lattice + glm::vec3(windowMin) * voxelSize;
     g.voxelSize = voxelSize;
     g.n = n;
     const int ni = int(n);
@@ -66,6 +74,7 @@ ClipAtlases::ClipAtlases(const gpu::Context& ctx, uint32_t n, uint32_t levels) {
     d.extent = {n, n, n * levels};
     d.name = "clipmap radiance atlas";
     radiance = gpu::Image(ctx, d);
+    d.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // recordAtlasFold copies within it
     d.extent = {sh::DIRECTIONAL_VOLUMES * (n / 2), n / 2, (n / 2) * levels};
     d.mipLevels = directionalMipCount(n);
     d.name = "clipmap directional atlas";
@@ -96,6 +105,40 @@ void recordAtlasCopy(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolu
     }
     vkCmdCopyImage(cmd, v.directional.handle(), VK_IMAGE_LAYOUT_GENERAL, atlases.directional.handle(),
                    VK_IMAGE_LAYOUT_GENERAL, uint32_t(mips.size()), mips.data());
+}
+
+void recordAtlasFold(VkCommandBuffer cmd, gpu::Tracker& tracker, const std::vector<const VoxelVolumes*>& levels,
+                     const ClipAtlases& atlases) {
+    tracker.image(atlases.directional, gpu::use::CopyDstGeneral).flush(cmd);
+    for (size_t l = 1; l < levels.size(); ++l) {
+        const GridSpec& fine = levels[l - 1]->grid;
+        const GridSpec& coarse = levels[l]->grid;
+        // The fine window's corner in voxels of the coarse level, from the
+        // coarse one's (whole: the levels share their lattice, windows snap).
+        const glm::ivec3 offset = glm::ivec3(glm::round((fine.origin - coarse.origin) / coarse.voxelSize));
+        std::vector<VkImageCopy> regions;
+        for (uint32_t k = 0; k + 1 < levels[l]->directionalMips; ++k) {
+            const int cell = 2 << k;  // voxels of the coarse level per cell of its mip k
+            if (offset.x % cell || offset.y % cell || offset.z % cell) break;
+            const uint32_t side = (coarse.n / 2) >> k, half = side / 2;
+            const glm::ivec3 at = offset / cell;
+            for (uint32_t d = 0; d < sh::DIRECTIONAL_VOLUMES; ++d) {
+                VkImageCopy r{};
+                r.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, k + 1, 0, 1};
+                r.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, k, 0, 1};
+                r.srcOffset = {int32_t(d * half), 0, int32_t((l - 1) * half)};
+                r.dstOffset = {int32_t(d * side) + at.x, at.y, int32_t(l * side) + at.z};
+                r.extent = {half, half, half};
+                regions.push_back(r);
+            }
+        }
+        // Level l - 1's mips may have been written by its own fold just before.
+        gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+        if (!regions.empty())
+            vkCmdCopyImage(cmd, atlases.directional.handle(), VK_IMAGE_LAYOUT_GENERAL, atlases.directional.handle(),
+                           VK_IMAGE_LAYOUT_GENERAL, uint32_t(regions.size()), regions.data());
+    }
 }
 
 ClipScrollPass::ClipScrollPass(const gpu::Context& ctx) : ctx_(ctx) {

@@ -32,18 +32,25 @@ struct ClipmapSettings {
 };
 
 // Windows move in steps of this many voxels of their level, so the cells of
-// directional mips 0 and 1 (2 and 4 voxels) keep their place in the world and
-// a scroll changes the filtered light only where voxels came or went.
-inline constexpr int kClipSnapVoxels = 4;
+// directional mips 0-2 (2-8 voxels) keep their place in the world (a scroll
+// changes the filtered light only where voxels came or went), and a level's
+// window lies on whole cells of the next level's mips 0 and 1, into which
+// recordAtlasFold filters it.
+inline constexpr int kClipSnapVoxels = 8;
 
 // Level 0's voxel edge when none is given: the coarsest level spans twice the
 // scene's longest side, so its window holds the whole scene from anywhere in it.
 float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels);
-// The minimum corner (in whole voxels of edge voxelSize) of an N^3 window
-// centred on `centre`, snapped to kClipSnapVoxels.
-glm::ivec3 clipWindowMin(const glm::vec3& centre, float voxelSize, uint32_t n);
+// Where every level's voxels start: the scene's lower bounds at the centres of
+// level 0's voxels, as fitGrid places them (a wall on the bounds is then one
+// voxel layer, not two; the coarser levels' voxels hold it at a quarter, an
+// eighth, ... of their edge, never on a face). Levels share it, so they nest.
+glm::vec3 clipLattice(const scene::Bounds& bounds, float voxelSize0);
+// The minimum corner (in whole voxels of edge voxelSize from `lattice`) of an
+// N^3 window centred on `centre`, snapped to kClipSnapVoxels.
+glm::ivec3 clipWindowMin(const glm::vec3& centre, const glm::vec3& lattice, float voxelSize, uint32_t n);
 // The grid of a window: origin at its minimum corner, wrap = minimum mod N.
-GridSpec clipLevelGrid(const glm::ivec3& windowMin, float voxelSize, uint32_t n);
+GridSpec clipLevelGrid(const glm::ivec3& windowMin, const glm::vec3& lattice, float voxelSize, uint32_t n);
 // What a clipmap cone tracer reads of the levels (level 0 first).
 shader::ConeLevels coneLevels(const std::vector<const VoxelVolumes*>& levels);
 
@@ -59,6 +66,16 @@ struct ClipAtlases {
 // Copies level l's radiance and directional volumes (every mip) into the
 // atlases; the level's volumes are left in gpu::use::CopySrcGeneral.
 void recordAtlasCopy(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& level, uint32_t l,
+                     const ClipAtlases& atlases);
+
+// Where level l - 1's window covers level l, level l's directional mips in
+// the atlas are replaced by level l - 1's next ones (mip k by mip k + 1: the
+// same cells), for every k whose cells the windows' offset aligns with (0 and
+// 1 always, kClipSnapVoxels): a coarse level then carries the light and the
+// partial opacity its finer neighbour filtered from fine voxels, not those of
+// its own coarse voxelization, in which any triangle makes a voxel opaque.
+// Levels in order, so the filtered light climbs every level.
+void recordAtlasFold(VkCommandBuffer cmd, gpu::Tracker& tracker, const std::vector<const VoxelVolumes*>& levels,
                      const ClipAtlases& atlases);
 
 // The inputs of a cone tracer over clipmap levels: their grids

@@ -32,13 +32,14 @@ constexpr uint32_t kN = 32;
 constexpr float kVoxel = 1.0f / 16.0f;  // level 0: a 2 m window; level 1: 4 m
 
 TEST(ClipmapWindow, CentredOnTheCameraAndSnapped) {
-    // Voxel 0.5: the camera at x = 10.2 is in voxel 20; 20 - 16 = 4 is a multiple of 4.
-    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(10.2f, -0.1f, -7.9f), 0.5f, 32), glm::ivec3(4, -16, -32));
+    static_assert(vxgi::kClipSnapVoxels == 8, "the cases below assume steps of 8 voxels");
+    // Voxel 0.5: the camera at x = 10.2 is in voxel 20; 20 - 16 = 4 rounds to 8.
+    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(10.2f, -0.1f, -7.9f), glm::vec3(0.0f), 0.5f, 32), glm::ivec3(8, -16, -32));
     // Half a snap step either way rounds to the nearest multiple.
-    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(0.9f, 0.0f, 1.1f), 0.5f, 32).x, -16);  // voxel 1: -15 -> -16
-    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(1.1f, 0.0f, 0.0f), 0.5f, 32).x, -12);  // voxel 2: -14 -> -12
+    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(0.9f, 0.0f, 1.1f), glm::vec3(0.0f), 0.5f, 32).x, -16);  // voxel 1: -15 -> -16
+    EXPECT_EQ(vxgi::clipWindowMin(glm::vec3(2.1f, 0.0f, 0.0f), glm::vec3(0.0f), 0.5f, 32).x, -8);   // voxel 4: -12 -> -8
     for (float x = -20.0f; x < 20.0f; x += 0.37f) {
-        const glm::ivec3 m = vxgi::clipWindowMin(glm::vec3(x), 0.25f, 64);
+        const glm::ivec3 m = vxgi::clipWindowMin(glm::vec3(x), glm::vec3(0.0f), 0.25f, 64);
         EXPECT_EQ(m.x % vxgi::kClipSnapVoxels, 0);
         // The camera stays within a snap step of the window's centre.
         EXPECT_LE(std::abs(x / 0.25f - float(m.x + 32)), float(vxgi::kClipSnapVoxels / 2) + 1.0f) << x;
@@ -46,15 +47,32 @@ TEST(ClipmapWindow, CentredOnTheCameraAndSnapped) {
 }
 
 TEST(ClipmapWindow, GridWrapsNegativeCornersIntoTheVolume) {
-    const vxgi::GridSpec g = vxgi::clipLevelGrid(glm::ivec3(-36, 0, 40), 0.25f, 32);
+    const vxgi::GridSpec g = vxgi::clipLevelGrid(glm::ivec3(-36, 0, 40), glm::vec3(0.125f, 0.0f, 0.0f), 0.25f, 32);
     EXPECT_EQ(g.wrap, glm::ivec3(28, 0, 8));
-    EXPECT_EQ(g.origin, glm::vec3(-9.0f, 0.0f, 10.0f));
+    EXPECT_EQ(g.origin, glm::vec3(-8.875f, 0.0f, 10.0f));
     EXPECT_EQ(g.voxelSize, 0.25f);
     scene::Bounds b;
     b.min = glm::vec3(-10.0f, 0.0f, -2.0f);
     b.max = glm::vec3(10.0f, 3.0f, 2.0f);
     // The coarsest of 3 levels spans twice the longest side: 32 x 4 x s0 = 40 m.
     EXPECT_FLOAT_EQ(vxgi::clipBaseVoxelSize(b, 32, 3), 40.0f / 128.0f);
+    // The lattice puts the lower bounds at voxel centres: -10 = 0.125 + (k + 0.5) 0.25 for whole k.
+    const glm::vec3 lattice = vxgi::clipLattice(b, 0.25f);
+    for (int a = 0; a < 3; ++a) {
+        const float k = (b.min[a] - lattice[a]) / 0.25f - 0.5f;
+        EXPECT_NEAR(k, std::round(k), 1e-4f) << a;
+        EXPECT_GE(lattice[a], 0.0f);
+        EXPECT_LT(lattice[a], 0.25f);
+    }
+}
+
+// A directional light of 3 W/m^2 travelling along `direction`.
+void addSun(scene::Scene& s, glm::vec3 direction) {
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    sun.intensity = 3.0f;
+    addLight(s, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::normalize(direction));
 }
 
 // A floor, a wall and a sphere spread over more than one level-0 window.
@@ -67,11 +85,7 @@ scene::Scene spreadScene(bool emissive = true) {
     addQuad(s, red, glm::vec3(1.3f, 0.2f, 0.0f), 0.6f, glm::angleAxis(q, glm::vec3(0, 0, 1)));
     addMeshNode(s, icosphere(2), red, glm::vec3(-0.8f, -0.1f, 0.6f), glm::quat(1, 0, 0, 0), glm::vec3(0.35f));
     addTopDownCamera(s, 0.3f, glm::radians(70.0f));
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.intensity = 3.0f;
-    addLight(s, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::normalize(glm::vec3(-0.5f, -1.0f, -0.3f)));
+    addSun(s, glm::vec3(-0.5f, -1.0f, -0.3f));
     return s;
 }
 
@@ -265,6 +279,44 @@ TEST_F(Clipmap, EveryLevelIsTheFittedGridOfItsWindowRolled) {
     }
 }
 
+// After a frame, level 1's directional mip 0 in the atlas, where level 0's
+// window covers it, holds level 0's mip 1 (the same cells, filtered from
+// level 0's finer voxels), texel for texel; elsewhere its own.
+TEST_F(Clipmap, CoarseLevelCarriesTheFinerLevelsFilteredLight) {
+    render::Renderer r(context(), spreadScene(), clipSettings(2));
+    r.renderFrame();
+    const vxgi::ClipAtlases* atlases = r.clipAtlases();
+    ASSERT_NE(atlases, nullptr);
+    const std::vector<const vxgi::VoxelVolumes*> levels = r.levelVolumes();
+    const std::vector<uint8_t> mip0 = gpu::readbackImage(context(), atlases->directional, gpu::use::ComputeRead, 0);
+    const std::vector<uint8_t> mip1 = gpu::readbackImage(context(), atlases->directional, gpu::use::ComputeRead, 1);
+    // Level 0's window corner in cells (2 voxels) of level 1's mip 0.
+    const glm::ivec3 at =
+        glm::ivec3(glm::round((levels[0]->grid.origin - levels[1]->grid.origin) / levels[1]->grid.voxelSize)) / 2;
+    const int side0 = int(kN / 2), side1 = int(kN / 4);
+    auto texel = [](const std::vector<uint8_t>& img, int w, int h, glm::ivec3 p) {
+        uint64_t v;
+        std::memcpy(&v, img.data() + 8 * ((size_t(p.z) * h + p.y) * w + p.x), 8);
+        return v;
+    };
+    size_t same = 0, lit = 0;
+    const int w0 = 6 * side0, w1 = 6 * side1;
+    for (int d = 0; d < 6; ++d)
+        for (int z = 0; z < side1; ++z)
+            for (int y = 0; y < side1; ++y)
+                for (int x = 0; x < side1; ++x) {
+                    const uint64_t fine = texel(mip1, w1, side1, glm::ivec3(d * side1 + x, y, z));
+                    const uint64_t coarse =
+                        texel(mip0, w0, side0, glm::ivec3(d * side0 + at.x + x, at.y + y, side0 + at.z + z));
+                    same += fine == coarse;
+                    lit += fine != 0;
+                }
+    std::printf("  level 0's window at cell (%d, %d, %d) of level 1's mip 0: %zu of %d texels equal, %zu not empty\n",
+                at.x, at.y, at.z, same, 6 * side1 * side1 * side1, lit);
+    EXPECT_EQ(same, size_t(6 * side1 * side1 * side1));
+    EXPECT_GT(lit, 100u);
+}
+
 double luminance(const float* c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
 
 // The largest change of the indirect term between neighbouring pixels of the
@@ -295,11 +347,7 @@ TEST_F(Clipmap, IndirectLightIsContinuousAcrossALevelBorder) {
     addQuad(s, grey, glm::vec3(0.0f, 0.0f, 0.0f), 0.7f);
     addQuad(s, wall, glm::vec3(0.0f, 0.0f, -0.6f), 0.7f, glm::angleAxis(q, glm::vec3(1, 0, 0)));
     addTopDownCamera(s, 0.25f, glm::radians(140.0f));
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.intensity = 3.0f;
-    addLight(s, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::normalize(glm::vec3(0.2f, -1.0f, -0.6f)));
+    addSun(s, glm::vec3(0.2f, -1.0f, -0.6f));
     render::RenderSettings rs = clipSettings(2);
     rs.clipmap.voxelSize = kVoxel / 2.0f;
     rs.width = rs.height = 64;
