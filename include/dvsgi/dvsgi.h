@@ -63,6 +63,10 @@ struct Settings {
     uint32_t supersample = 1;            // render k*width x k*height, box-average; 1..8
     uint32_t camera = 0;                 // index among the scene's cameras
     uint32_t voxels = 128;               // N of the N^3 grid: 0 or a power of two in 32..512
+    uint32_t clipmapLevels = 0;          // 0 = one grid fitted to the scene; 1..8 levels of N^3 following
+                                         // the camera, each twice the voxel of the one before (docs/clipmap.md)
+    float clipmapVoxel = 0.0f;           // level 0's voxel edge in metres, 0..1000; 0 = the coarsest level
+                                         // spans twice the scene's longest side
     int bounces = -1;                    // -1 = converge (auto); K in 0..64 = exactly K per frame
     float bounceConvergence = 0.005f;    // auto: stop when the light still missing is below this
     uint32_t maxBounces = 64;            // auto: give up after this many bounces; 1..1000

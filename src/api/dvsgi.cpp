@@ -32,7 +32,7 @@ std::string settingNames(std::string message) {
         {"voxels", "Settings::voxels"},         {"shadow-map", "Settings::shadowMapSize"},
         {"device", "DeviceOptions::deviceName"}, {"validate", "DeviceOptions::validation"},
         {"shadows", "shadow cones"},            {"light-occlusion", "light occlusion"},
-        {"view", "voxel view"},
+        {"view", "voxel view"},                 {"clipmap", "Settings::clipmapLevels"},
     };
     const size_t colon = message.find(':');
     for (const auto& [setting, name] : names)
@@ -69,6 +69,9 @@ void validate(const Settings& s, uint32_t cameras) {
                    std::to_string(s.camera));
     if (s.voxels != 0 && (s.voxels < 32 || s.voxels > 512 || !powerOfTwo(s.voxels)))
         badSetting("voxels", "0 or a power of two in 32..512", std::to_string(s.voxels));
+    if (s.clipmapLevels > 8) badSetting("clipmapLevels", "0..8", std::to_string(s.clipmapLevels));
+    if (!(s.clipmapVoxel >= 0.0f && s.clipmapVoxel <= 1000.0f))
+        badSetting("clipmapVoxel", "0..1000 (metres)", std::to_string(s.clipmapVoxel));
     if (s.bounces < -1 || s.bounces > 64) badSetting("bounces", "-1 (auto) or 0..64", std::to_string(s.bounces));
     if (!(s.bounceConvergence >= 1e-5f && s.bounceConvergence <= 0.5f))
         badSetting("bounceConvergence", "0.00001..0.5", std::to_string(s.bounceConvergence));
@@ -95,6 +98,8 @@ render::RenderSettings toRenderSettings(const Settings& s) {
     rs.shadowMapSize = s.shadowMapSize;
     rs.camera = int(s.camera);
     rs.voxels = s.voxels;
+    rs.clipmap.levels = s.clipmapLevels;
+    rs.clipmap.voxelSize = s.clipmapVoxel;
     rs.voxelLight.bounceMode = s.bounces < 0 ? vxgi::BounceMode::Converge : vxgi::BounceMode::Fixed;
     if (s.bounces >= 0) rs.voxelLight.bounces = uint32_t(s.bounces);
     rs.voxelLight.convergence = s.bounceConvergence;

@@ -371,6 +371,15 @@ TEST_F(AppDevice, ErrorsNameTheSetting) {
     s = smallSettings();
     s.cones = 7;
     EXPECT_NE(message(s).find("Settings::cones"), std::string::npos) << message(s);
+    s = smallSettings();
+    s.clipmapLevels = 9;
+    EXPECT_NE(message(s).find("Settings::clipmapLevels"), std::string::npos) << message(s);
+    s = smallSettings();
+    s.clipmapVoxel = -1.0f;
+    EXPECT_NE(message(s).find("Settings::clipmapVoxel"), std::string::npos) << message(s);
+    s = smallSettings();
+    s.clipmapLevels = 2;
+    EXPECT_EQ(message(s), "<no error>");
 
     dvsgi::Renderer renderer(scene, smallSettings(), external());
     renderer.render();
