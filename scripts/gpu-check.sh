@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # One-shot check on a machine with a GPU: build, run `dvsgi bench
 # --bench-tables` at 1920x1080 for 128^3, 256^3 and 512^3 (compute voxelizer)
-# and the defaults with the geometry voxelizer, `--pv-tables` at 128^3, the test
-# suite, and the 512x512 quality renders. Everything it writes goes under one folder: log.txt (what
+# and the defaults with the geometry voxelizer, `--pv-tables` at 128^3, the Sponza
+# walk with `--clipmap 4` at 128^3, the test suite, and the 512x512 quality renders. Everything it writes goes under one folder: log.txt (what
 # ran, how long, pass/fail), bench*.json and bench*.md, tests-*.txt (each
 # suite's output), quality/ (EXRs and metrics).
 #
@@ -14,7 +14,8 @@
 # together. The benches come first, as the figures a short device lease most
 # needs; each caps its measuring (DVSGI_GPU_BENCH_SECONDS,
 # default 8 s per measurement) and its whole run (DVSGI_GPU_BENCH_TIMEOUT,
-# 300 s; DVSGI_GPU_BENCH_GEOMETRY_TIMEOUT, 120 s); DVSGI_GPU_SKIP_BENCH=1 leaves
+# 300 s; DVSGI_GPU_BENCH_GEOMETRY_TIMEOUT, 120 s; DVSGI_GPU_CLIPMAP_TIMEOUT,
+# 180 s); DVSGI_GPU_SKIP_BENCH=1 leaves
 # them out. Each test suite: DVSGI_GPU_TEST_TIMEOUT (300 s); each quality
 # render: DVSGI_QUALITY_TIMEOUT (120 s).
 # Exit status: 0 when every test passed and the benches completed.
@@ -123,6 +124,17 @@ else
     --bench-voxels 128 --bench-out "$out/bench-pv.json" > "$out/bench-pv.md" 2> "$out/bench-pv-stderr.txt"
   rc=$?
   log "bench (pv tables): exit $rc"
+  [ $rc -eq 0 ] || status=1
+  # Camera-following clipmap (docs/clipmap.md): the Sponza walk with 4 levels
+  # of 128^3, per-frame passes (scroll, slabs) and flicker.
+  walk="$(dirname "$0")/../docs/paths/sponza-walk.json"
+  log "bench: Sponza walk, --clipmap 4, 128^3, 1920x1080"
+  timeout "${DVSGI_GPU_CLIPMAP_TIMEOUT:-180}" "${runner[@]}" "$dvsgi" bench \
+    "$shared/scenes/crytek-sponza/sponza-sun.gltf" --add-model none --bench-voxels 128 --bench-frames 16 \
+    --bench-warmup 1 --width 1920 --height 1080 --time-step 0.3 --camera-path "$walk" --clipmap 4 \
+    --bench-out "$out/bench-clipmap.json" > "$out/bench-clipmap.md" 2> "$out/bench-clipmap-stderr.txt"
+  rc=$?
+  log "bench (clipmap walk): exit $rc"
   [ $rc -eq 0 ] || status=1
 fi
 
