@@ -20,9 +20,19 @@ layout(set = 0, binding = BIND_LIGHT_LIGHTS, std430) readonly buffer Lights { Gp
 layout(set = 0, binding = BIND_LIGHT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
 layout(set = 0, binding = BIND_LIGHT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
 layout(set = 0, binding = BIND_LIGHT_OUT_DIRECT, rgba32f) uniform writeonly image2D outDirect;
+#ifdef DVSGI_CLIPMAP
+// Clipmap levels (lib/cone_trace.glsl): a pixel's cones start at the finest
+// level that holds its surface.
+int coneFirst = 0;
+#define CONE_FIRST_LEVEL coneFirst
+layout(set = 0, binding = BIND_LIGHT_VOXEL_GRID) uniform Levels { ConeLevels clip; };
+layout(set = 0, binding = BIND_LIGHT_VOXEL_RADIANCE) uniform sampler3D radianceAtlas;
+layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directionalAtlas;
+#else
 layout(set = 0, binding = BIND_LIGHT_VOXEL_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_LIGHT_VOXEL_RADIANCE) uniform sampler3D radianceVolume;
 layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directional;
+#endif
 layout(set = 0, binding = BIND_LIGHT_OUT_SHADOW, r16f) uniform writeonly image2D outShadow;
 
 layout(push_constant) uniform Push { LightingPush pc; };
@@ -35,14 +45,14 @@ layout(push_constant) uniform Push { LightingPush pc; };
 float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     ConeParams p = pc.cone;
     p.trace.z = min(dist, p.trace.z);
-    float originHeight = pc.cone.surface.z * grid.originSize.w;
+    float originHeight = pc.cone.surface.z * traceGrid(CONE_FIRST_LEVEL).originSize.w;
     vec3 origin = P + N * originHeight;
     return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p, true).a;
 }
 
 float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
     ConeParams p = pc.cone;
-    float s = grid.originSize.w;
+    float s = traceGrid(CONE_FIRST_LEVEL).originSize.w;
     float tanHalf = max(radius / dist, pc.shadow.y);
     // Stop where the last sample's footprint (a cell, or the cone's diameter
     // there, on each side) still misses the emitter's own voxel layer, which a
@@ -79,6 +89,12 @@ void main() {
     vec4 nr = texelFetch(gNormal, px, 0);
     vec3 N = normalize(nr.xyz);
     vec3 V = normalize(frame.cameraPos.xyz - P);
+#ifdef DVSGI_CLIPMAP
+    // No blend with the next level here: visibility cones are narrow, and a
+    // level's border moves a shadow's edge by less than its voxel.
+    float blend;
+    coneFirst = clipSurfaceLevel(P, blend);
+#endif
 
     vec3 radiance = emission.rgb;
     float visSum = 0.0, visCount = 0.0;

@@ -8,6 +8,7 @@
 #include "shared/lighting_pass.h"
 #include "shared/voxel_data.h"
 #include "vxgi/cone_settings.h"
+#include "vxgi/clipmap.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::render {
@@ -18,6 +19,9 @@ namespace sh = dvsgi::shader;
 
 const uint32_t kComp[] = {
 #include "shaders/lighting.comp.inc"
+};
+const uint32_t kCompClipmap[] = {
+#include "shaders/lighting_clipmap.comp.inc"
 };
 
 }  // namespace
@@ -42,6 +46,7 @@ LightingPass::LightingPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::LightingPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "lighting");
+    clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompClipmap), layout, "lighting (clipmap)");
 }
 
 void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const LightingInputs& in,
@@ -57,9 +62,13 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .image(in.shadowMap, gpu::use::ShaderRead)
         .image(volumes.radiance, gpu::use::ComputeRead);
     tracker.image(volumes.directional, gpu::use::ComputeRead);
+    if (in.clip)
+        tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
+            .image(in.clip->atlases.directional, gpu::use::ComputeRead);
     tracker.image(direct, gpu::use::ComputeWrite, true).image(visibility, gpu::use::ComputeWrite, true).flush(cmd);
     const VkSampler volumeSampler = in.samplers.volume.handle();
-    gpu::bind(cmd, pipeline_);
+    const gpu::Pipeline& pipeline = in.clip ? clipPipeline_ : pipeline_;
+    gpu::bind(cmd, pipeline);
     const VkSampler point = in.samplers.point.handle();
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_LIGHT_FRAME, in.frame.handle())
@@ -71,15 +80,19 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .storageBuffer(sh::BIND_LIGHT_SHADOW_VIEWS, in.views.handle())
         .sampledImage(sh::BIND_LIGHT_SHADOW_MAP, in.shadowMap.view(), in.samplers.shadow.handle())
         .storageImage(sh::BIND_LIGHT_OUT_DIRECT, direct.view())
-        .uniformBuffer(sh::BIND_LIGHT_VOXEL_GRID, volumes.gridBuffer.handle())
-        .sampledImage(sh::BIND_LIGHT_VOXEL_RADIANCE, volumes.radiance.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
-        .sampledImage(sh::BIND_LIGHT_VOXEL_DIRECTIONAL, volumes.directional.view(), volumeSampler, VK_IMAGE_LAYOUT_GENERAL)
+        .uniformBuffer(sh::BIND_LIGHT_VOXEL_GRID, in.clip ? in.clip->levels.handle() : volumes.gridBuffer.handle())
+        .sampledImage(sh::BIND_LIGHT_VOXEL_RADIANCE,
+                      in.clip ? in.clip->atlases.radiance.view() : volumes.radiance.view(), volumeSampler,
+                      VK_IMAGE_LAYOUT_GENERAL)
+        .sampledImage(sh::BIND_LIGHT_VOXEL_DIRECTIONAL,
+                      in.clip ? in.clip->atlases.directional.view() : volumes.directional.view(), volumeSampler,
+                      VK_IMAGE_LAYOUT_GENERAL)
         .storageImage(sh::BIND_LIGHT_OUT_SHADOW, visibility.view())
-        .push(ctx_, cmd, pipeline_);
-    const sh::LightingPush push{vxgi::gpuCone(cone, volumes.grid),
+        .push(ctx_, cmd, pipeline);
+    const sh::LightingPush push{vxgi::gpuCone(cone, in.clip ? in.clip->coarsest : volumes.grid),
                             glm::vec4(cones.enabled ? 1.0f : 0.0f, std::tan(glm::radians(cones.apertureDegrees * 0.5f)),
                                       0.0f, 0.0f)};
-    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     vkCmdDispatch(cmd, gpu::groupCount(direct.desc().extent.width, sh::LIGHTING_GROUP),
                   gpu::groupCount(direct.desc().extent.height, sh::LIGHTING_GROUP), 1);
 }

@@ -13,6 +13,7 @@ class Tracker;
 }
 namespace dvsgi::vxgi {
 class VoxelVolumes;
+struct ClipTrace;
 }
 
 namespace dvsgi::render {
@@ -33,6 +34,7 @@ struct LightingInputs {
     const gpu::Buffer& lights;
     const gpu::Buffer& views;
     const vxgi::VoxelVolumes& volumes;  // radiance and directional (shadow cones, area-light visibility)
+    const vxgi::ClipTrace* clip = nullptr;  // clipmap levels to trace instead of `volumes`
 };
 
 class LightingPass {
@@ -45,7 +47,7 @@ public:
 
 private:
     const gpu::Context& ctx_;
-    gpu::Pipeline pipeline_;
+    gpu::Pipeline pipeline_, clipPipeline_;
 };
 
 }  // namespace dvsgi::render

@@ -97,6 +97,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         // The lighting pass always binds voxel volumes; without voxels it gets
         // small empty ones that nothing writes.
         if (settings.shadowCones.enabled) throw std::runtime_error("shadows: cone needs voxels (voxels > 0)");
+        if (settings.clipmap.levels > 0) throw std::runtime_error("clipmap: needs voxels (voxels > 0)");
         volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, vxgi::fitGrid(sceneGpu_->bounds, 8));
     } else {
         const vxgi::GridSpec grid =
@@ -303,12 +304,13 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
         return;
     }
     if (!pv_) gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);  // pv: before the voxels
-    const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_};
+    const std::optional<vxgi::ClipTrace> trace =
+        clip_.empty() ? std::nullopt
+                      : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});
+    const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
+                             trace ? &*trace : nullptr};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
-        const std::optional<vxgi::ClipTrace> trace =
-            clip_.empty() ? std::nullopt
-                          : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});
         const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
                                 f.reducedTrace() ? &f.traceSpecular : nullptr};

@@ -61,8 +61,6 @@ void Renderer::createClipmap() {
                                  std::to_string(sh::MAX_CLIP_LEVELS));
     if (pv_) throw std::runtime_error("clipmap: not with --voxelizer pv (its cleanup keeps one fitted grid)");
     if (s.hasVoxelBox) throw std::runtime_error("clipmap: not with --voxel-box (the levels follow the camera)");
-    if (s.shadowCones.enabled)
-        throw std::runtime_error("clipmap: not with --shadows cone (shadow cones trace one grid)");
     const float base = s.clipmap.voxelSize > 0.0f ? s.clipmap.voxelSize
                                                    : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, s.voxels, levels);
     clipLattice_ = vxgi::clipLattice(sceneGpu_->bounds, base);

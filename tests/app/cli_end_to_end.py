@@ -132,6 +132,8 @@ expect_error("--clipmap with pv", ["render", "--clipmap", "2", "--voxelizer", "p
 expect_error("--clipmap with --voxel-box", ["render", "--clipmap", "2", "--voxel-box", "-1,-1,-1,1,1,1", "--width", "8",
                                             "--height", "8", "--out", out], "--clipmap")
 expect_error("absurd --clipmap", ["render", "--clipmap", "9"], "--clipmap")
+expect_error("--clipmap without voxels", ["render", "--clipmap", "2", "--voxels", "0", "--width", "8", "--height", "8",
+                                          "--out", out], "--clipmap")
 expect_error("negative --clipmap-voxel", ["render", "--clipmap-voxel", "-1"], "--clipmap-voxel")
 checks += 1
 clip_frames = os.path.join(TMP, "clip_#.exr")

@@ -370,6 +370,35 @@ TEST_F(Clipmap, IndirectLightIsContinuousAcrossALevelBorder) {
     EXPECT_LE(stepClip, 1.5 * stepFitted);
 }
 
+// Shadow cones (--shadows cone) trace the levels too: with one level, the
+// direct light equals a fitted grid's on the level's window (same voxels, the
+// atlas sampled as the grid's own volumes are).
+TEST_F(Clipmap, ShadowConesTraceTheLevels) {
+    render::RenderSettings rs = clipSettings(1);
+    rs.shadowCones.enabled = true;
+    render::Renderer clip(context(), spreadScene(false), rs);
+    clip.renderFrame();
+    const vxgi::GridSpec g = clip.levelVolumes()[0]->grid;
+    render::RenderSettings fs = rs;
+    fs.clipmap.levels = 0;
+    fs.hasVoxelBox = true;
+    fs.voxelBoxMin = g.origin;
+    fs.voxelBoxMax = g.origin + g.voxelSize * float(kN);
+    render::Renderer fitted(context(), spreadScene(false), fs);
+    fitted.renderFrame();
+    const image::ImageRGBA32F a = clip.readTerm(sh::TERM_DIRECT), b = fitted.readTerm(sh::TERM_DIRECT);
+    double diff = 0.0, ref = 0.0;
+    for (size_t i = 0; i < a.rgba.size(); ++i) {
+        diff += double(a.rgba[i] - b.rgba[i]) * double(a.rgba[i] - b.rgba[i]);
+        ref += double(b.rgba[i]) * double(b.rgba[i]);
+    }
+    const double rel = std::sqrt(diff / ref);
+    std::printf("  direct light with shadow cones, one level against the fitted grid of its window: relative RMSE %.2e\n",
+                rel);
+    EXPECT_GT(ref, 0.0);
+    EXPECT_LT(rel, 1e-3);
+}
+
 // Switching the only light off with the clipmap (feedback bounces): the
 // indirect light falls below 1 % of its lit value within kFrames frames.
 TEST_F(Clipmap, SwitchedOffLightLeavesNoGhost) {
