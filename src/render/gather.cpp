@@ -31,7 +31,7 @@ const uint32_t kUpsample[] = {
 
 }  // namespace
 
-GatherPass::GatherPass(const gpu::Context& ctx) : ctx_(ctx) {
+GatherPass::GatherPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -48,7 +48,7 @@ GatherPass::GatherPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::GatherPush);
     layout.pushConstantStages = cs;
     gather_ = gpu::Pipeline(ctx, gpu::Spirv(kGather), layout, "cone tracing");
-    clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
+    if (clipmap) clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
 
     gpu::LayoutDesc up;
     up.bindings = {{sh::BIND_UP_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},

@@ -47,7 +47,8 @@ struct GatherTargets {
 
 class GatherPass {
 public:
-    explicit GatherPass(const gpu::Context& ctx);
+    // clipmap: also the pipeline that traces clipmap levels (compiled only when asked for).
+    explicit GatherPass(const gpu::Context& ctx, bool clipmap = false);
     // Writes the targets whole (diffuse.a = ambient occlusion).
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const GatherTargets& out,
                 const GatherSettings& settings, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const;

@@ -26,7 +26,7 @@ const uint32_t kCompClipmap[] = {
 
 }  // namespace
 
-LightingPass::LightingPass(const gpu::Context& ctx) : ctx_(ctx) {
+LightingPass::LightingPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     gpu::LayoutDesc layout;
@@ -46,7 +46,7 @@ LightingPass::LightingPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::LightingPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "lighting");
-    clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompClipmap), layout, "lighting (clipmap)");
+    if (clipmap) clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompClipmap), layout, "lighting (clipmap)");
 }
 
 void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const LightingInputs& in,

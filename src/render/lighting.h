@@ -39,7 +39,8 @@ struct LightingInputs {
 
 class LightingPass {
 public:
-    explicit LightingPass(const gpu::Context& ctx);
+    // clipmap: also the pipeline whose cones trace clipmap levels (compiled only when asked for).
+    explicit LightingPass(const gpu::Context& ctx, bool clipmap = false);
     // Writes `direct` and `visibility` (FrameTargets) whole.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const LightingInputs& in, const gpu::Image& direct,
                 const gpu::Image& visibility, const ShadowConeSettings& shadowCones, const vxgi::ConeSettings& cone,

@@ -87,12 +87,14 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     samplers_ = std::make_unique<Samplers>(createSamplers(ctx));
     shadows_ = std::make_unique<ShadowPass>(ctx, *sceneGpu_);
     gbuffer_ = std::make_unique<GBufferPass>(ctx, *sceneGpu_);
-    lighting_ = std::make_unique<LightingPass>(ctx);
+    // Clipmap variants are compiled only for a clipmap (each pipeline costs lavapipe a JIT compile).
+    const bool clipmap = settings.clipmap.levels > 0 && settings.voxels > 0;
+    lighting_ = std::make_unique<LightingPass>(ctx, clipmap);
     composite_ = std::make_unique<CompositePass>(ctx);
     // Converging records three scopes per bounce (frame, bounce, filtering).
     const uint32_t bounceScopes = 3 * std::max({settings.voxelLight.maxBounces, settings.voxelLight.bounces, 1u});
     timers_ = std::make_unique<gpu::GpuTimers>(ctx, 64 + bounceScopes);
-    gather_ = std::make_unique<GatherPass>(ctx);
+    gather_ = std::make_unique<GatherPass>(ctx, clipmap);
     if (settings.voxels == 0) {
         // The lighting pass always binds voxel volumes; without voxels it gets
         // small empty ones that nothing writes.
@@ -116,7 +118,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
                                                     gpu::MemoryUse::Readback, "voxel list header");
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
-        bounce_ = std::make_unique<vxgi::BouncePass>(ctx);
+        bounce_ = std::make_unique<vxgi::BouncePass>(ctx, clipmap);
         temporal_ = std::make_unique<TemporalIndirectPass>(ctx);
     }
     for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);

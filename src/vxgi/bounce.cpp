@@ -26,7 +26,7 @@ const uint32_t kBounceClipmap[] = {
 
 }  // namespace
 
-BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
+BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
     layout.bindings = {{sh::BIND_CONE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
@@ -39,8 +39,10 @@ BouncePass::BouncePass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
-    layout.bindings.push_back({sh::BIND_BOUNCE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs});
-    clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
+    if (clipmap) {
+        layout.bindings.push_back({sh::BIND_BOUNCE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs});
+        clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
+    }
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
 }
 

@@ -20,7 +20,8 @@ struct ClipTrace;
 
 class BouncePass {
 public:
-    explicit BouncePass(const gpu::Context& ctx);
+    // clipmap: also the pipeline that traces clipmap levels (compiled only when asked for).
+    explicit BouncePass(const gpu::Context& ctx, bool clipmap = false);
     // Reads the attributes, `direct` and the directional volumes (through
     // `volumeSampler`), writes `radiance`. `stats` (optional, statsFloats(slots)
     // floats, host-visible) receives per-workgroup sums of |luminance change|

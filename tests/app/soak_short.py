@@ -58,8 +58,12 @@ else:
     check("device memory held at all", last["device_bytes"] > 100000, str(last["device_bytes"]))
     check("nothing allocated after the last renderer", j["device_bytes_after_last_renderer"] == 0,
           str(j["device_bytes_after_last_renderer"]))
-    rss = j["growth_percent"]["rss"]
-    check("RSS growth < 1 %%", rss < 1.0, "%.3f %%" % rss)
+    # dvsgi's own memory: RSS less the driver's JIT code (lavapipe's grows by about
+    # 0.2 MiB per renderer; docs/RELIABILITY.md), which the soak reports apart.
+    rss = j["growth_percent"]["rss_excluding_jit_code"]
+    check("RSS growth without JIT code < 1 %%", rss < 1.0,
+          "%.3f %% (with it %.3f %%; JIT code %+.2f MiB)" % (rss, j["growth_percent"]["rss"],
+                                                           j["growth_percent"]["jit_code_bytes"] / 2**20))
     check("passed flag", j["passed"] is True, str(j["passed"]))
     # The light and the model move: reports of one variant differ in output.
     by_variant = {}
