@@ -176,14 +176,6 @@ Descriptors& Descriptors::sampledImage(uint32_t binding, VkImageView view, VkSam
     return *this;
 }
 
-Descriptors& Descriptors::sampledImages(uint32_t binding, const std::vector<VkImageView>& views, VkSampler sampler,
-                                        VkImageLayout layout) {
-    Entry e{binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {}, {}};
-    for (VkImageView v : views) e.images.push_back({sampler, v, layout});
-    entries_.push_back(std::move(e));
-    return *this;
-}
-
 Descriptors& Descriptors::storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
     entries_.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, {}, {buffer, offset, range}});
     return *this;

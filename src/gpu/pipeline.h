@@ -76,9 +76,6 @@ public:
     Descriptors& storageImage(uint32_t binding, VkImageView view);
     Descriptors& sampledImage(uint32_t binding, VkImageView view, VkSampler sampler,
                               VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    // An array binding: element i samples views[i].
-    Descriptors& sampledImages(uint32_t binding, const std::vector<VkImageView>& views, VkSampler sampler,
-                               VkImageLayout layout);
     Descriptors& storageBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
                                VkDeviceSize range = VK_WHOLE_SIZE);
     Descriptors& uniformBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize offset = 0,
