@@ -12,11 +12,6 @@ ivec3 gridVoxel(ivec3 s) {
 }
 // A list entry (storage coordinates) as a grid voxel.
 ivec3 listVoxel(uint entry) { return gridVoxel(unpackVoxel(entry)); }
-// Static voxelization after a scroll writes only voxels outside the kept box.
-bool keptByScroll(ivec3 v) {
-    return grid.keep.w != 0 && all(greaterThanEqual(v, grid.keep.xyz)) &&
-           all(lessThan(v, grid.keep.xyz + int(grid.dims.x)));
-}
 // The closed voxel range [a, b] lies wholly in the kept box: a triangle
 // whose range it is adds nothing to static voxelization after a scroll, so the
 // voxelizers skip it before any per-voxel work.
@@ -24,5 +19,7 @@ bool rangeKeptByScroll(ivec3 a, ivec3 b) {
     return grid.keep.w != 0 && all(greaterThanEqual(a, grid.keep.xyz)) &&
            all(lessThan(b, grid.keep.xyz + int(grid.dims.x)));
 }
+// Static voxelization after a scroll writes only voxels outside the kept box.
+bool keptByScroll(ivec3 v) { return rangeKeptByScroll(v, v); }
 
 #endif

@@ -114,8 +114,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
             volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx, grid, settings.voxelSlots);
         voxelView_ = std::make_unique<VoxelViewPass>(ctx);
         list_ = std::make_unique<vxgi::VoxelListPass>(ctx);
-        listHeader_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::VoxelListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                    gpu::MemoryUse::Readback, "voxel list header");
+        listHeader_ = vxgi::createListHeaderReadback(ctx);
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx, clipmap);

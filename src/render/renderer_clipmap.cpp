@@ -24,11 +24,6 @@ namespace sh = dvsgi::shader;
 
 namespace {
 
-std::unique_ptr<gpu::Buffer> readbackHeader(const gpu::Context& ctx) {
-    return std::make_unique<gpu::Buffer>(ctx, sizeof(sh::VoxelListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                         gpu::MemoryUse::Readback, "voxel list header");
-}
-
 std::unique_ptr<gpu::Buffer> coneLevelsBuffer(const gpu::Context& ctx, const char* name) {
     return std::make_unique<gpu::Buffer>(ctx, sizeof(sh::ConeLevels),
                                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -72,7 +67,7 @@ void Renderer::createClipmap() {
             volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, s.voxelSlots);
         } else {
             clip_[l].volumes = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, s.voxelSlots);
-            clip_[l].header = readbackHeader(ctx_);
+            clip_[l].header = vxgi::createListHeaderReadback(ctx_);
             for (const gpu::Image* v : clip_[l].volumes->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
         }
     }

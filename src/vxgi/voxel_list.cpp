@@ -35,6 +35,11 @@ void recordEmptyList(VkCommandBuffer cmd, const gpu::Buffer& list, uint32_t slot
     vkCmdUpdateBuffer(cmd, list.handle(), 0, sizeof(header), &header);
 }
 
+std::unique_ptr<gpu::Buffer> createListHeaderReadback(const gpu::Context& ctx) {
+    return std::make_unique<gpu::Buffer>(ctx, sizeof(sh::VoxelListHeader), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                         gpu::MemoryUse::Readback, "voxel list header");
+}
+
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset) {
     vkCmdDispatchIndirect(cmd, list.handle(), argsOffset);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "gpu/pipeline.h"
 
@@ -43,6 +44,8 @@ private:
 // Records the header of an empty list of `slots` slots into `list` (new
 // volumes; the progressive voxelizer's new list each frame).
 void recordEmptyList(VkCommandBuffer cmd, const gpu::Buffer& list, uint32_t slots);
+// A host-readable buffer for VoxelListPass::copyHeader.
+std::unique_ptr<gpu::Buffer> createListHeaderReadback(const gpu::Context& ctx);
 // Recorded by each pass that runs over list entries: the indirect dispatch
 // whose arguments sit at `argsOffset` in the list buffer.
 void dispatchOverList(VkCommandBuffer cmd, const gpu::Buffer& list, VkDeviceSize argsOffset);
