@@ -222,15 +222,16 @@ int runRender(const RenderOptions& o) {
         if (o.settings.clipmap.levels > 0)
             std::printf("voxel clipmap: %zu levels of %u^3 following the camera (the grid above is level 0's, its "
                         "window placed each frame), voxels %.5f m to %.5f m, windows %.3f m to %.3f m wide, "
-                        "%.1f MiB of voxel data in all\n",
+                        "%.1f MiB of voxel data in all (atlases included)\n",
                         levels.size(), levels[0]->grid.n, levels.front()->grid.voxelSize,
                         levels.back()->grid.voxelSize, levels.front()->grid.voxelSize * float(levels[0]->grid.n),
                         levels.back()->grid.voxelSize * float(levels[0]->grid.n),
                         [&] {
+                            // Levels 1.. share one set of dense volumes: counted once.
                             double bytes = 0.0;
-                            for (const vxgi::VoxelVolumes* v : levels)
-                                for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(v->grid.n, v->slots))
-                                    bytes += double(m.bytes);
+                            for (const vxgi::VoxelVolumes* v : levels) bytes += double(v->ownBytes());
+                            if (levels.size() > 2) bytes += double(levels[1]->dense()->bytes());
+                            if (const vxgi::ClipAtlases* a = renderer.clipAtlases()) bytes += double(a->bytes());
                             return bytes / 1048576.0;
                         }());
     }

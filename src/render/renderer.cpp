@@ -212,22 +212,28 @@ void Renderer::updateFrameConstants() {
     if (pv_) uploadPvViews();
 }
 
+// What a bounce's cones trace with --clipmap: the levels through the windows
+// their directional volumes were last filtered in.
+std::optional<vxgi::ClipTrace> Renderer::bounceTrace() const {
+    if (clip_.empty()) return std::nullopt;
+    return vxgi::ClipTrace{*directionalLevels_, *atlases_, levelVolumes().back()->grid};
+}
+
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
-    gpu::GpuTimers* t = timers_.get();
+    const std::optional<vxgi::ClipTrace> trace = bounceTrace();
+    recordLevels(cmd, "voxel filtering (bounce)", [&](size_t l, const vxgi::VoxelVolumes& v) {
+        recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, withStats && l == 0);
+    });
+}
+
+// A level's bounce. With --clipmap its voxels trace from their level up,
+// through the windows the directional volumes were filtered in; statistics:
+// level 0's.
+void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::VoxelVolumes& v,
+                                 const vxgi::ClipTrace* trace, bool withStats) {
     const vxgi::ConeSettings cone = vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor);
-    const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
-    if (clip_.empty()) {
-        bounce_->record(cmd, tracker_, *volumes_, samplers_->volume.handle(), cone,
-                        withStats ? bounceStats_.get() : nullptr, t);
-    } else {
-        // Every level's voxels trace from their level up, through the windows
-        // the directional volumes were filtered in; statistics: level 0's.
-        const vxgi::ClipTrace trace{*directionalLevels_, *atlases_, levels.back()->grid};
-        for (size_t l = 0; l < levels.size(); ++l)
-            bounce_->record(cmd, tracker_, *levels[l], samplers_->volume.handle(), cone,
-                            withStats && l == 0 ? bounceStats_.get() : nullptr, t, &trace, uint32_t(l));
-    }
-    recordFilter(cmd, "voxel filtering (bounce)");
+    bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, withStats ? bounceStats_.get() : nullptr,
+                    timers_.get(), trace, uint32_t(l));
 }
 
 // Voxelization, shadow maps and the voxel light up to (not including) the
@@ -258,14 +264,15 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     // Emitters lit as patches leave their emission out of the voxel radiance.
     vxgi::VoxelLightSettings light = settings_.voxelLight;
     light.emissionInRadiance = patchCount_ == 0;
-    for (const vxgi::VoxelVolumes* v : levelVolumes()) inject_->record(cmd, tracker_, *v, shadows, light, t);
-    if (feedbackFrame()) {
-        // The directional volumes still hold the previous frame's filtered
-        // radiance: one bounce from them adds one more bounce of light.
-        recordBounce(cmd, false);
-        return;
-    }
-    recordFilter(cmd, "voxel filtering");
+    // A feedback frame bounces once from the directional volumes, which still
+    // hold the previous frame's filtered radiance: one more bounce of light.
+    const bool feedback = feedbackFrame();
+    const std::optional<vxgi::ClipTrace> trace = bounceTrace();
+    recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
+                 [&](size_t l, const vxgi::VoxelVolumes& v) {
+                     inject_->record(cmd, tracker_, v, shadows, light, t);
+                     if (feedback) recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, false);
+                 });
 }
 
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
@@ -460,8 +467,11 @@ bool Renderer::growVoxelSlots() {
                                      " voxel slots, which already cover the whole grid");
         const vxgi::GridSpec grid = v.grid;
         std::unique_ptr<vxgi::VoxelVolumes>& owner = l == 0 ? volumes_ : clip_[l].volumes;
+        // Levels 1.. keep sharing their dense volumes (cleared before each use);
+        // level 0's start zeroed, as the fitted grid's list-driven clears need.
+        const std::shared_ptr<vxgi::DenseVolumes> dense = l == 0 ? nullptr : owner->dense();
         owner.reset();
-        owner = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, slots);
+        owner = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, slots, dense);
         for (const gpu::Image* img : owner->all()) tracker_.assume(*img, gpu::use::ComputeReadWrite);
         if (!clip_.empty()) clip_[l].placed = false;
         grown = true;

@@ -4,6 +4,7 @@
 // and write.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -171,11 +172,18 @@ private:
     void recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
+    void recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::VoxelVolumes& v, const vxgi::ClipTrace* trace,
+                           bool withStats);
+    std::optional<vxgi::ClipTrace> bounceTrace() const;
     // Clipmap (renderer_clipmap.cpp): levels, windows, scrolls.
     void createClipmap();
     void recordClipmapVoxels(VkCommandBuffer cmd);
     void recordClipmapStatic(VkCommandBuffer cmd, size_t level, const glm::ivec3& windowMin);
-    void recordFilter(VkCommandBuffer cmd, const char* timer);  // every level's directional volumes
+    // Per level: `pass`, then its filtering (and with --clipmap, its atlas
+    // copy); then the atlas fold.
+    void recordLevels(VkCommandBuffer cmd, const char* filterTimer,
+                      const std::function<void(size_t, const vxgi::VoxelVolumes&)>& pass);
+    std::shared_ptr<vxgi::DenseVolumes> clipScratch() const;
     vxgi::VoxelVolumes& level(size_t l) { return l == 0 ? *volumes_ : *clip_[l].volumes; }
     const gpu::Buffer& levelHeader(size_t l) const { return l == 0 ? *listHeader_ : *clip_[l].header; }
     void readClipmapHeaders();  // after a frame: levels that freed many entries start afresh

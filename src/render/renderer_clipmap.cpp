@@ -40,6 +40,11 @@ void clearImage(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& im
 
 }  // namespace
 
+// Levels 1.. share level 1's dense volumes (null before level 1 exists).
+std::shared_ptr<vxgi::DenseVolumes> Renderer::clipScratch() const {
+    return clip_.size() > 1 && clip_[1].volumes ? clip_[1].volumes->dense() : nullptr;
+}
+
 std::vector<const vxgi::VoxelVolumes*> Renderer::levelVolumes() const {
     std::vector<const vxgi::VoxelVolumes*> v{volumes_.get()};
     for (size_t l = 1; l < clip_.size(); ++l) v.push_back(clip_[l].volumes.get());
@@ -66,7 +71,7 @@ void Renderer::createClipmap() {
         if (l == 0) {
             volumes_ = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, s.voxelSlots);
         } else {
-            clip_[l].volumes = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, s.voxelSlots);
+            clip_[l].volumes = std::make_unique<vxgi::VoxelVolumes>(ctx_, grid, s.voxelSlots, clipScratch());
             clip_[l].header = vxgi::createListHeaderReadback(ctx_);
             for (const gpu::Image* v : clip_[l].volumes->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
         }
@@ -83,15 +88,16 @@ void Renderer::createClipmap() {
 }
 
 // A level voxelized from scratch at windowMin: what it held is cleared (with
-// its old grid), the list restarts, and the radiance volume, whose cells are
-// in window coordinates, is cleared whole.
+// its old grid), the list restarts, and level 0's radiance volume, whose cells
+// are in window coordinates, is cleared whole (the other levels clear their
+// shared one before every use: recordLevels).
 void Renderer::recordClipmapStatic(VkCommandBuffer cmd, size_t l, const glm::ivec3& windowMin) {
     gpu::GpuTimers* t = timers_.get();
     vxgi::VoxelVolumes& v = level(l);
     voxelizer_->clearOccupied(cmd, tracker_, v, t);
     list_->reset(cmd, tracker_, v);
     v.setGrid(cmd, tracker_, vxgi::clipLevelGrid(windowMin, clipLattice_, v.grid.voxelSize, v.grid.n), glm::ivec4(0));
-    clearImage(cmd, tracker_, v.radiance);
+    if (l == 0) clearImage(cmd, tracker_, v.radiance);
     voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, v, vxgi::VoxelizeMode::Static, t);
     list_->finish(cmd, tracker_, v, true);
     clip_[l].windowMin = windowMin;
@@ -119,7 +125,7 @@ void Renderer::recordClipmapVoxels(VkCommandBuffer cmd) {
                 scroll_->record(cmd, tracker_, v, c.windowMin, want, t);
                 v.setGrid(cmd, tracker_, vxgi::clipLevelGrid(want, clipLattice_, v.grid.voxelSize, v.grid.n),
                           glm::ivec4(c.windowMin - want, 1));
-                clearImage(cmd, tracker_, v.radiance);
+                if (l == 0) clearImage(cmd, tracker_, v.radiance);
                 voxelizer_->voxelize(cmd, tracker_, *sceneGpu_, v, vxgi::VoxelizeMode::Static, t);
                 list_->finish(cmd, tracker_, v, true);
                 c.windowMin = want;
@@ -133,13 +139,30 @@ void Renderer::recordClipmapVoxels(VkCommandBuffer cmd) {
     gpu::recordUniformUpdate(cmd, tracker_, *coneLevels_, &coneLevelsHost_, sizeof(coneLevelsHost_));
 }
 
-void Renderer::recordFilter(VkCommandBuffer cmd, const char* timer) {
+// Levels 1.. share one set of dense volumes (vxgi::DenseVolumes): each level
+// in turn clears the radiance, runs `pass` on its voxels (which writes every
+// occupied voxel's radiance), filters it and copies the result into the
+// atlases, before the next level reuses them. A level's bounce traces only its
+// own and coarser levels, whose slabs still hold what it must read.
+void Renderer::recordLevels(VkCommandBuffer cmd, const char* filterTimer,
+                            const std::function<void(size_t, const vxgi::VoxelVolumes&)>& pass) {
     const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
-    for (const vxgi::VoxelVolumes* v : levels) aniso_->record(cmd, tracker_, *v, timers_.get(), timer);
+    for (size_t l = 0; l < levels.size(); ++l) {
+        if (l > 0) {
+            gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap scratch clear");
+            clearImage(cmd, tracker_, levels[l]->radiance);
+        }
+        pass(l, *levels[l]);
+        aniso_->record(cmd, tracker_, *levels[l], timers_.get(), filterTimer);
+        if (clip_.empty()) continue;
+        gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");
+        vxgi::recordAtlasCopy(cmd, tracker_, *levels[l], uint32_t(l), *atlases_);
+    }
     if (clip_.empty()) return;
-    gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");
-    for (size_t l = 0; l < levels.size(); ++l) vxgi::recordAtlasCopy(cmd, tracker_, *levels[l], uint32_t(l), *atlases_);
-    vxgi::recordAtlasFold(cmd, tracker_, levels, *atlases_);
+    {
+        gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");
+        vxgi::recordAtlasFold(cmd, tracker_, levels, *atlases_);
+    }
     directionalLevels_ = coneLevels_.get();
 }
 

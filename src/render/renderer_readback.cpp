@@ -51,14 +51,16 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"voxel direct light", volumes_->direct.memorySize()});
         items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
-        // --clipmap: the items above are level 0's; each coarser level holds as much again.
+        // --clipmap: the items above are level 0's; each coarser level holds
+        // its index, attributes, direct light and list, and one set of dense
+        // volumes serves them all.
         const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
-        for (size_t l = 1; l < levels.size(); ++l) {
-            const vxgi::VoxelVolumes& v = *levels[l];
-            items.push_back({"clipmap level " + std::to_string(l) + " volumes",
-                             v.index.size() + v.accum.memorySize() + v.radiance.memorySize() + v.direct.memorySize() +
-                                 v.directional.memorySize() + v.list.size()});
-        }
+        for (size_t l = 1; l < levels.size(); ++l)
+            items.push_back({"clipmap level " + std::to_string(l) + " voxels", levels[l]->ownBytes()});
+        if (const std::shared_ptr<vxgi::DenseVolumes> scratch = clipScratch(); scratch && levels.size() > 2)
+            items.push_back({"clipmap levels 1-" + std::to_string(levels.size() - 1) +
+                                 " radiance and directional (shared)",
+                             scratch->bytes()});
         if (atlases_) items.push_back({"clipmap atlases (radiance, directional)", atlases_->bytes()});
         if (pv_) items.push_back({"pv last frame's attributes and list", pv_->memoryBytes()});
         uint64_t rsm = 0, around = 0;

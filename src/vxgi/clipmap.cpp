@@ -70,11 +70,12 @@ ClipAtlases::ClipAtlases(const gpu::Context& ctx, uint32_t n, uint32_t levels) {
     gpu::ImageDesc d;
     d.type = VK_IMAGE_TYPE_3D;
     d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    // Transfer source: recordAtlasFold copies within the directional atlas;
+    // tests and debugging read both back.
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     d.extent = {n, n, n * levels};
     d.name = "clipmap radiance atlas";
     radiance = gpu::Image(ctx, d);
-    d.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;  // recordAtlasFold copies within it
     d.extent = {sh::DIRECTIONAL_VOLUMES * (n / 2), n / 2, (n / 2) * levels};
     d.mipLevels = directionalMipCount(n);
     d.name = "clipmap directional atlas";

@@ -85,10 +85,14 @@ double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots) {
     return double(total) / (double(n) * n * n);
 }
 
-VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t slotCount)
-    : grid(g),
+VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t slotCount,
+                           std::shared_ptr<DenseVolumes> shared)
+    : dense_(shared ? std::move(shared) : std::make_shared<DenseVolumes>()),
+      grid(g),
       directionalMips(directionalMipCount(g.n)),
-      slots(roundSlotCapacity(g.n, slotCount ? slotCount : defaultSlotCapacity(g.n))) {
+      slots(roundSlotCapacity(g.n, slotCount ? slotCount : defaultSlotCapacity(g.n))),
+      radiance(dense_->radiance),
+      directional(dense_->directional) {
     const VkPhysicalDeviceLimits& limits = ctx.properties.limits;
     if (g.n < 8 || (g.n & (g.n - 1)) != 0)
         throw std::runtime_error("voxels: " + std::to_string(g.n) + " is not a power of two of at least 8");
@@ -124,16 +128,21 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
     d.extent = {sh::VOXEL_SLOT_ROW, rows, 1};
     d.name = "voxel direct light";
     direct = gpu::Image(ctx, d);
-    d.extent = {g.n, g.n, g.n};
-    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
-    d.name = "voxel radiance";
-    radiance = gpu::Image(ctx, d);
-    d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
-    d.extent = {sh::DIRECTIONAL_VOLUMES * (g.n / 2), g.n / 2, g.n / 2};
-    d.mipLevels = directionalMips;
-    d.name = "directional volumes";
-    directional = gpu::Image(ctx, d);
+    const bool ownDense = !radiance.handle();
+    if (ownDense) {
+        d.extent = {g.n, g.n, g.n};
+        d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+        d.usage = storage | VK_IMAGE_USAGE_SAMPLED_BIT;
+        d.name = "voxel radiance";
+        radiance = gpu::Image(ctx, d);
+        d.extent = {sh::DIRECTIONAL_VOLUMES * (g.n / 2), g.n / 2, g.n / 2};
+        d.mipLevels = directionalMips;
+        d.name = "directional volumes";
+        directional = gpu::Image(ctx, d);
+    } else if (radiance.desc().extent.width != g.n) {
+        throw std::logic_error("voxels: shared dense volumes of " + std::to_string(radiance.desc().extent.width) +
+                               "^3 given to a " + std::to_string(g.n) + "^3 grid");
+    }
 
     const sh::VoxelGrid gpuGrid = gpuVoxelGrid(g, slots);
     gridBuffer = gpu::createBuffer(ctx, &gpuGrid, sizeof(gpuGrid),
@@ -157,7 +166,9 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
                            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                            VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
         const VkClearColorValue zero{};
+        // Shared dense volumes may hold another grid's data: their user clears them.
         for (const gpu::Image* img : all()) {
+            if (!ownDense && (img == &radiance || img == &directional)) continue;
             gpu::transition(cmd, *img, gpu::use::Undefined, gpu::use::TransferDst);
             const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
             vkCmdClearColorImage(cmd, img->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
@@ -179,6 +190,11 @@ void VoxelVolumes::setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gri
     grid = g;
     const sh::VoxelGrid v = gpuVoxelGrid(g, slots, keep);
     gpu::recordUniformUpdate(cmd, tracker, gridBuffer, &v, sizeof(v));
+}
+
+uint64_t VoxelVolumes::ownBytes() const {
+    const uint64_t sparse = index.size() + accum.memorySize() + direct.memorySize() + list.size();
+    return sparse + (sharesDense() ? 0 : dense_->bytes());
 }
 
 std::vector<const gpu::Image*> VoxelVolumes::all() const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,20 +60,36 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots);
 // Their sum over N^3: the figure issue #14's compact-storage goal is stated in.
 double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots);
 
+// A grid's dense volumes, in window coordinates: the radiance and the
+// directional volumes filtered from it. Clipmap levels 1.. share one set
+// (Renderer: each level clears the radiance, lights or bounces its voxels,
+// filters and copies the result into the atlases before the next level runs),
+// so six levels of 128^3 hold two sets instead of six (docs/clipmap.md).
+struct DenseVolumes {
+    gpu::Image radiance;     // RGBA16F, N^3: direct light + emission (+ bounces), a = opacity
+    // RGBA16F, 6 (N/2) x (N/2) x (N/2) + mips: the six directional volumes side
+    // by side along x (shader::directionalTexel), order -X +X -Y +Y -Z +Z.
+    gpu::Image directional;
+    uint64_t bytes() const { return radiance.memorySize() + directional.memorySize(); }
+};
+
 class VoxelVolumes {
+    std::shared_ptr<DenseVolumes> dense_;  // first: radiance and directional refer into it
+
 public:
     // slots: 0 = defaultSlotCapacity(grid.n); rounded with roundSlotCapacity.
-    VoxelVolumes(const gpu::Context& ctx, const GridSpec& grid, uint32_t slots = 0);
+    // dense: volumes of the same N another grid uses too (a clipmap level's
+    // shared scratch); null = its own, zeroed.
+    VoxelVolumes(const gpu::Context& ctx, const GridSpec& grid, uint32_t slots = 0,
+                 std::shared_ptr<DenseVolumes> dense = nullptr);
 
     GridSpec grid;
     uint32_t directionalMips;
     uint32_t slots;       // slot capacity (whole rows of VOXEL_SLOT_ROW)
     gpu::Image accum;     // R32_SFLOAT, ROW x rows x VOXEL_CHANNELS: summed attributes per slot
     gpu::Image direct;    // RGBA16F, ROW x rows x 1: direct light + emission per slot, kept for the bounces
-    gpu::Image radiance;  // RGBA16F, N^3: direct light + emission (+ bounces), a = opacity
-    // RGBA16F, 6 (N/2) x (N/2) x (N/2) + mips: the six directional volumes side
-    // by side along x (shader::directionalTexel), order -X +X -Y +Y -Z +Z.
-    gpu::Image directional;
+    gpu::Image& radiance;     // DenseVolumes::radiance
+    gpu::Image& directional;  // DenseVolumes::directional
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid
     // uint32 per grid voxel (x fastest): slot + 1 | VOXEL_INDEX_STATIC, 0 = empty.
     gpu::Buffer index;
@@ -80,12 +97,16 @@ public:
     // packed coordinate per slot. Storage, indirect-dispatch arguments, fills.
     gpu::Buffer list;
     double bytesPerGridVoxel() const { return voxelBytesPerGridVoxel(grid.n, slots); }
+    const std::shared_ptr<DenseVolumes>& dense() const { return dense_; }
+    bool sharesDense() const { return dense_.use_count() > 1; }
+    // What this grid alone holds: everything but shared dense volumes.
+    uint64_t ownBytes() const;
     // Records a new grid (same n: a clipmap level's scrolled window) into
     // gridBuffer and `grid`; keep (shader::VoxelGrid.keep) limits the next
     // static voxelization to the voxels outside it.
     void setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const GridSpec& g, const glm::ivec4& keep);
-    // Every volume (image), for code that handles them all alike. They start
-    // zeroed, in gpu::use::ComputeReadWrite; so does the index.
+    // Every volume (image), for code that handles them all alike. Its own
+    // start zeroed, in gpu::use::ComputeReadWrite; so does the index.
     std::vector<const gpu::Image*> all() const;
 };
 

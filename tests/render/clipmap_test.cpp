@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
@@ -276,6 +277,63 @@ TEST_F(Clipmap, EveryLevelIsTheFittedGridOfItsWindowRolled) {
         EXPECT_EQ(sums, 0u);
         EXPECT_EQ(live, occupied);
         EXPECT_EQ(seen.size(), live);
+    }
+}
+
+// Levels 1.. light, filter and copy their voxels one after the other through
+// one shared set of dense volumes (vxgi::DenseVolumes). With the direct light
+// only, every level's slab of the radiance atlas equals the radiance volume of
+// a fitted grid on its window, voxel for voxel: nothing of one level's light
+// reaches another's slab, nothing is lost to the shared scratch's clears.
+TEST_F(Clipmap, LevelsShareOneScratchYetEachSlabHoldsItsOwnLight) {
+    const scene::Scene s = spreadScene();
+    render::RenderSettings cs = clipSettings(3);
+    cs.voxelLight.bounces = 0;
+    render::Renderer clip(context(), s, cs);
+    clip.renderFrame();
+    moveCamera(clip, glm::vec3(0.7f, 0.3f, -0.3f));
+    clip.renderFrame();
+    const std::vector<const vxgi::VoxelVolumes*> levels = clip.levelVolumes();
+    ASSERT_EQ(levels.size(), 3u);
+    EXPECT_EQ(levels[1]->dense(), levels[2]->dense());
+    EXPECT_NE(levels[0]->dense(), levels[1]->dense());
+    const std::vector<uint8_t> atlas =
+        gpu::readbackImage(context(), clip.clipAtlases()->radiance, gpu::use::ComputeRead, 0);
+    const int n = int(kN);
+    auto rgba = [](const uint8_t* p) {
+        uint16_t h[4];
+        std::memcpy(h, p, sizeof(h));
+        return glm::vec4(glm::unpackHalf1x16(h[0]), glm::unpackHalf1x16(h[1]), glm::unpackHalf1x16(h[2]),
+                         glm::unpackHalf1x16(h[3]));
+    };
+    for (size_t l = 0; l < levels.size(); ++l) {
+        const vxgi::VoxelVolumes& c = *levels[l];
+        render::RenderSettings fs = clipSettings(0);
+        fs.voxelLight.bounces = 0;
+        fs.hasVoxelBox = true;
+        fs.voxelBoxMin = c.grid.origin;
+        fs.voxelBoxMax = c.grid.origin + c.grid.voxelSize * float(kN);
+        render::Renderer fitted(context(), s, fs);
+        fitted.renderFrame();
+        const std::vector<uint8_t> ref =
+            gpu::readbackImage(context(), fitted.volumes()->radiance, gpu::use::ComputeRead, 0);
+        size_t lit = 0, differ = 0;
+        double largest = 0.0;
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) {
+                    const size_t o = size_t(x) + size_t(n) * (size_t(y) + size_t(n) * size_t(z));
+                    const glm::vec4 a = rgba(atlas.data() + 8 * (o + l * size_t(n) * n * n));
+                    const glm::vec4 b = rgba(ref.data() + 8 * o);
+                    lit += b.r + b.g + b.b > 0.0f;
+                    const float d = glm::length(a - b) / std::max(1e-3f, glm::length(b));
+                    largest = std::max(largest, double(d));
+                    differ += d > 1e-3f;
+                }
+        std::printf("  level %zu: %zu lit voxels, %zu differ from the fitted grid's (largest %.1e)\n", l, lit, differ,
+                    largest);
+        EXPECT_GT(lit, 100u);
+        EXPECT_EQ(differ, 0u);
     }
 }
 
