@@ -99,7 +99,12 @@ bool loadTriangle(uint draw, uint firstIndex, int vertexOffset, out Triangle t) 
     ivec3 a = max(ivec3(ceil(lo - VOXC_BOX_GROWTH)) - 1, ivec3(0));
     ivec3 b = min(ivec3(floor(hi + VOXC_BOX_GROWTH)), ivec3(N - 1));
     if (any(greaterThan(a, b))) return false;
-    if (pc.ids.z != VOXELIZE_DYNAMIC && rangeKeptByScroll(a, b)) return false;
+    if (pc.ids.z != VOXELIZE_DYNAMIC) {
+        if (rangeKeptByScroll(a, b)) return false;
+        // Only the exposed slab's voxels are tested (both phases load the
+        // triangle here, so tiles and columns agree).
+        clipRangeToExposed(a, b);
+    }
     t.lo = project(a, t.axis);
     t.hi = project(b, t.axis);
     dvec3 nq = t.axis == 0u ? t.n.yzx : (t.axis == 1u ? t.n.zxy : t.n.xyz);
