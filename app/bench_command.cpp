@@ -219,8 +219,12 @@ nlohmann::json measurementJson(const Measurement& m, double copyGbps) {
     j["frame_wall"] = summaryJson(summarize(m.wallMs), m.wallMs);
     addTrafficJson(m, copyGbps, j);
     if (!m.flickerMean.empty())
-        j["flicker"] = {{"mean_relative_change", summaryJson(summarize(m.flickerMean), m.flickerMean)},
-                        {"p99_relative_change", summaryJson(summarize(m.flickerP99), m.flickerP99)}};
+        j["flicker"] = {
+            {"mean_relative_change", summaryJson(summarize(m.flickerMean), m.flickerMean)},
+            {"p99_relative_change", summaryJson(summarize(m.flickerP99), m.flickerP99)},
+            {"irradiance",
+             {{"mean_relative_change", summaryJson(summarize(m.flickerIrradianceMean), m.flickerIrradianceMean)},
+              {"p99_relative_change", summaryJson(summarize(m.flickerIrradianceP99), m.flickerIrradianceP99)}}}};
     return j;
 }
 
@@ -305,6 +309,12 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
         });
         row("flicker: 99th percentile of the relative change", [](const Measurement& m) {
             return m.flickerP99.empty() ? std::string("-") : percentCell(m.flickerP99);
+        });
+        row("flicker of the irradiance (before the albedo): mean", [](const Measurement& m) {
+            return m.flickerIrradianceMean.empty() ? std::string("-") : percentCell(m.flickerIrradianceMean);
+        });
+        row("flicker of the irradiance: 99th percentile", [](const Measurement& m) {
+            return m.flickerIrradianceP99.empty() ? std::string("-") : percentCell(m.flickerIrradianceP99);
         });
     }
     row("triangles static / dynamic", [](const Measurement& m) {

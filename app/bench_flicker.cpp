@@ -17,9 +17,17 @@ void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float 
                         {"disoccluded_pixels", c.rejected},
                         {"mean_indirect_luminance_before", c.meanLuminanceBefore},
                         {"mean_indirect_luminance_after", c.meanLuminanceAfter}};
+        // The same for the light before the albedo: a moving camera resamples
+        // texture detail too, which the figure above counts as change.
+        const render::TemporalChange e =
+            render::temporalChange(*previous, current, 0.02f, render::TemporalTerm::Irradiance);
+        f["flicker"]["irradiance"] = {{"mean_relative_change", e.meanRelative},
+                                      {"p99_relative_change", e.p99Relative}};
         if (c.compared > 0) {
             m.flickerMean.push_back(c.meanRelative);
             m.flickerP99.push_back(c.p99Relative);
+            m.flickerIrradianceMean.push_back(e.meanRelative);
+            m.flickerIrradianceP99.push_back(e.p99Relative);
         }
     }
     m.detail["per_frame"].push_back(f);

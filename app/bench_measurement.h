@@ -68,6 +68,7 @@ struct Measurement {
     // --camera-path: the indirect term's change from each measured frame to
     // the next (mean and 99th percentile of the relative change, per frame).
     std::vector<double> flickerMean, flickerP99;
+    std::vector<double> flickerIrradianceMean, flickerIrradianceP99;  // the same before the albedo
 };
 
 // A markdown table's header: the corner cell, then one column per measurement

@@ -52,7 +52,10 @@ void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, out vec4 diffu
     float occlusion;
     vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
                                        : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
-    diffuseOut = vec4(base.rgb / PI * E * (1.0 - metallic), 1.0 - occlusion);
+    // Demodulated: the albedo base.rgb (1 - metallic) multiplies it in the
+    // composite, after upsampling and temporal accumulation, so those filter
+    // the smooth irradiance and never blur or smear the textures.
+    diffuseOut = vec4(E / PI, 1.0 - occlusion);
 
     specular = vec3(0.0);
     if (pc.flags.y != 0u && isGlossy(metallic, roughness)) {

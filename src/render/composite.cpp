@@ -23,7 +23,8 @@ CompositePass::CompositePass(const gpu::Context& ctx) : ctx_(ctx) {
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     layout.bindings = {{sh::BIND_COMP_DIRECT, storage, cs}, {sh::BIND_COMP_OUT, storage, cs},
                        {sh::BIND_COMP_DIFFUSE, storage, cs}, {sh::BIND_COMP_SPECULAR, storage, cs},
-                       {sh::BIND_COMP_SHADOW, storage, cs}};
+                       {sh::BIND_COMP_SHADOW, storage, cs},
+                       {sh::BIND_COMP_BASE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs}};
     layout.pushConstantBytes = sizeof(sh::CompositePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "composite");
@@ -34,6 +35,7 @@ void CompositePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Com
                            gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "composite");
     tracker.image(in.direct, gpu::use::ComputeRead).image(in.visibility, gpu::use::ComputeRead);
+    tracker.image(in.base, gpu::use::ShaderRead);
     if (in.indirect) tracker.image(in.diffuse, gpu::use::ComputeRead).image(in.specular, gpu::use::ComputeRead);
     else  // bound but not read: any layout the descriptor accepts
         tracker.image(in.diffuse, gpu::use::ComputeRead, true).image(in.specular, gpu::use::ComputeRead, true);
@@ -46,6 +48,7 @@ void CompositePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Com
         .storageImage(sh::BIND_COMP_DIFFUSE, in.diffuse.view())
         .storageImage(sh::BIND_COMP_SPECULAR, in.specular.view())
         .storageImage(sh::BIND_COMP_SHADOW, in.visibility.view())
+        .sampledImage(sh::BIND_COMP_BASE, in.base.view(), in.point)
         .push(ctx_, cmd, pipeline_);
     const sh::CompositePush push{glm::uvec4(width, height, supersample, term),
                                  glm::uvec4(applyAO ? 1u : 0u, in.indirect ? 1u : 0u, 0u, 0u)};

@@ -17,6 +17,8 @@ struct CompositeInputs {
     const gpu::Image& visibility;
     const gpu::Image& diffuse;
     const gpu::Image& specular;
+    const gpu::Image& base;  // G-buffer base colour + metallic (the diffuse term's albedo), internal size
+    VkSampler point;
     bool indirect;  // false: no cone tracing ran, `diffuse` and `specular` are not read
 };
 

@@ -354,7 +354,8 @@ uint32_t Renderer::lightSettleFrames() const {
 
 void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const {
     const FrameTargets& f = *targets_;
-    const CompositeInputs in{f.direct, f.visibility, f.diffuse, f.specular, voxelizer_ != nullptr};
+    const CompositeInputs in{f.direct,      f.visibility, f.diffuse, f.specular, f.gbuffer.base,
+                             samplers_->point.handle(), voxelizer_ != nullptr};
     composite_->record(cmd, tracker_, in, f.output, settings_.supersample, term, settings_.applyAO, timers);
 }
 

@@ -29,9 +29,12 @@ float sampleLuminance(const image::ImageRGBA32F& img, glm::vec2 p) {
 
 }  // namespace
 
-TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& after, float depthTolerance) {
-    const uint32_t w = after.term.width, h = after.term.height;
-    if (before.term.width != w || before.term.height != h || after.depth.width != w || after.depth.height != h ||
+TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& after, float depthTolerance,
+                              TemporalTerm which) {
+    const image::ImageRGBA32F& termB = which == TemporalTerm::Irradiance ? before.irradiance : before.term;
+    const image::ImageRGBA32F& termA = which == TemporalTerm::Irradiance ? after.irradiance : after.term;
+    const uint32_t w = termA.width, h = termA.height;
+    if (termB.width != w || termB.height != h || after.depth.width != w || after.depth.height != h ||
         before.depth.width != w || before.depth.height != h)
         throw std::invalid_argument("temporalChange: the frames' images differ in size");
     const glm::mat4 projA = projectionMatrix(after.camera, w, h), projB = projectionMatrix(before.camera, w, h);
@@ -72,7 +75,7 @@ TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& 
                 ++out.rejected;
                 continue;
             }
-            pairs.push_back({sampleLuminance(before.term, pb), luminance(after.term.at(x, y))});
+            pairs.push_back({sampleLuminance(termB, pb), luminance(termA.at(x, y))});
         }
     out.compared = pairs.size();
     if (pairs.empty()) return out;
@@ -101,6 +104,7 @@ TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& 
 TemporalFrame captureIndirect(const Renderer& renderer) {
     TemporalFrame f;
     f.term = renderer.readTerm(shader::TERM_INDIRECT);
+    f.irradiance = renderer.readTerm(shader::TERM_IRRADIANCE);
     f.depth = renderer.readSurface().depth;
     f.camera = renderer.camera();
     return f;

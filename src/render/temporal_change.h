@@ -16,6 +16,10 @@ class Renderer;
 
 struct TemporalFrame {
     image::ImageRGBA32F term;   // linear radiance (for example the indirect diffuse term)
+    // The same light before the surface's albedo (TERM_IRRADIANCE), when
+    // captured: what changes of the lighting alone look like, apart from the
+    // texture detail a moving camera's resampling changes too.
+    image::ImageRGBA32F irradiance;
     image::ImageRGBA32F depth;  // r = distance along the camera axis (m), +inf for no geometry (readSurface)
     scene::PlacedCamera camera;
 };
@@ -30,12 +34,15 @@ struct TemporalChange {
     double meanLuminanceBefore = 0.0, meanLuminanceAfter = 0.0;  // over the compared pixels
 };
 
+enum class TemporalTerm { Term, Irradiance };
+
 // `before` is frame t, `after` frame t+1; both images the same size.
 // depthTolerance: relative difference of the reprojected depth above which a
-// pixel counts as disoccluded.
-TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& after, float depthTolerance = 0.02f);
+// pixel counts as disoccluded. `which`: compare TemporalFrame::term or ::irradiance.
+TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& after, float depthTolerance = 0.02f,
+                              TemporalTerm which = TemporalTerm::Term);
 
-// The indirect diffuse term and the depth of the renderer's last frame, with its camera.
+// The indirect diffuse term, its irradiance and the depth of the renderer's last frame, with its camera.
 TemporalFrame captureIndirect(const Renderer& renderer);
 
 }  // namespace dvsgi::render

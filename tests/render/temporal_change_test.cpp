@@ -79,6 +79,17 @@ TEST(TemporalChange, ABrighterFrameChangesByItsFactor) {
     EXPECT_NEAR(c.meanLuminanceAfter / c.meanLuminanceBefore, 1.05, 0.003);
 }
 
+// The irradiance figure compares the frames' irradiance images, not their terms.
+TEST(TemporalChange, TheIrradianceFigureReadsTheIrradianceImages) {
+    TemporalFrame before = trace(kBefore, 1.0f), after = trace(kAfter, 1.0f);
+    before.irradiance = trace(kBefore, 2.0f).term;
+    after.irradiance = trace(kAfter, 2.2f).term;
+    EXPECT_LT(temporalChange(before, after).meanRelative, 0.003);
+    const TemporalChange e = temporalChange(before, after, 0.02f, TemporalTerm::Irradiance);
+    EXPECT_NEAR(e.meanRelative, 0.1, 0.005);
+    EXPECT_NEAR(e.meanLuminanceAfter / e.meanLuminanceBefore, 1.1, 0.005);
+}
+
 TEST(TemporalChange, SurfacesTheFirstFrameDidNotSeeAreLeftOut) {
     const TemporalChange open = temporalChange(trace(kBefore, 1.0f), trace(kAfter, 1.0f));
     // A wall appears: its pixels hold a surface frame t never saw there.

@@ -1,6 +1,7 @@
 // Reduced-resolution cone tracing (GatherSettings::traceScale, the CLI's
 // --trace-scale S <= 1): the depth- and normal-aware upsampling keeps the
 // indirect light of one surface from bleeding onto another across a depth edge.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -123,6 +124,53 @@ TEST_F(Upsampling, HalfResolutionTraceKeepsTheDepthEdge) {
     // 0.9 m (dz = 0.33); against the platform's 13x brighter indirect light
     // that still doubles the floor's value at a few pixels beside the edge.
     EXPECT_LT(edgeWorstUp, 1.85);
+}
+
+// A checkerboard floor of 2.5 cm squares (about 3 pixels) of albedo 0.9 and
+// 0.1 under the emissive ceiling, traced at half resolution: the cone-traced
+// diffuse term is demodulated (irradiance / pi), upsampled, and only then
+// multiplied by each pixel's own albedo, so the indirect term is exactly the
+// irradiance term times the G-buffer's albedo at every pixel, also where a
+// trace pixel's neighbours lie on the other colour (an upsampled albedo-
+// modulated term smeared 0.9 into the 0.1 squares there).
+TEST_F(Upsampling, AlbedoIsAppliedAtFullResolutionAfterUpsampling) {
+    scene::Scene s;
+    const int bright = addMaterial(s, glm::vec3(0.9f)), dark = addMaterial(s, glm::vec3(0.1f));
+    const float half = 0.0125f;
+    for (int j = -24; j < 24; ++j)
+        for (int i = -24; i < 24; ++i)
+            addQuad(s, (i + j) % 2 == 0 ? bright : dark,
+                    glm::vec3((float(i) + 0.5f) * 2.0f * half, 0.0f, (float(j) + 0.5f) * 2.0f * half), half);
+    addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(1.0f)), glm::vec3(0.0f, 1.0f, 0.0f), 1.0f,
+            glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)));
+    addTopDownCamera(s, 0.9f, glm::radians(60.0f));
+    render::Renderer r(context(), s, settings(0.5f));
+    r.renderFrame();
+    const image::ImageRGBA32F indirect = r.readTerm(sh::TERM_INDIRECT), irradiance = r.readTerm(sh::TERM_IRRADIANCE);
+    const image::ImageRGBA32F albedo = r.readSurface().albedo;
+    const int n = int(kSize);
+    int lit = 0, beside = 0;
+    double worst = 0.0;
+    for (int y = 1; y + 1 < n; ++y)
+        for (int x = 1; x + 1 < n; ++x) {
+            const float a = albedo.at(uint32_t(x), uint32_t(y))[1];
+            if (a <= 0.0f) continue;
+            const float e = irradiance.at(uint32_t(x), uint32_t(y))[1], v = indirect.at(uint32_t(x), uint32_t(y))[1];
+            ASSERT_GT(e, 0.0f) << x << " " << y;
+            ++lit;
+            bool other = false;
+            for (int d = 0; d < 4; ++d) {
+                const int dx = d == 0 ? 1 : (d == 1 ? -1 : 0), dy = d == 2 ? 1 : (d == 3 ? -1 : 0);
+                other |= std::abs(albedo.at(uint32_t(x + dx), uint32_t(y + dy))[1] - a) > 0.1f;
+            }
+            beside += other;
+            worst = std::max(worst, std::abs(double(v) - double(e) * a) / (double(e) * a));
+        }
+    std::printf("%d floor pixels, %d beside the other colour; largest |indirect - irradiance x albedo| / it: %.1e\n",
+                lit, beside, worst);
+    ASSERT_GT(lit, n * n / 2);
+    ASSERT_GT(beside, n * n / 4);
+    EXPECT_LT(worst, 1e-5);
 }
 
 }  // namespace
