@@ -4,7 +4,9 @@ table (frame, time, GPU ms, mean and 99th-percentile relative change of the
 indirect term, compared and disoccluded pixels) and draws a PNG plot of the
 two changes per frame on a log scale (0.01 % .. 1000 %; grey lines at every
 decade, green lines at the goals 1 % and 5 %; blue = mean, red = 99th
-percentile). No text is drawn: docs/benchmarks.md captions the plot.
+percentile; where the JSON has the irradiance's figures, light blue = its
+mean and orange = its 99th percentile). No text is drawn: docs/benchmarks.md
+captions the plot.
 Usage: flicker-plot.py BENCH.json OUT.png   (needs numpy and ../shared/tools)"""
 import json, os, sys
 
@@ -34,4 +36,9 @@ canvas.hline(canvas.y_of(5.0), (0, 160, 0), True)
 for key, colour in (("mean_relative_change", (30, 60, 220)), ("p99_relative_change", (220, 40, 40))):
     # a frame with nothing compared breaks the line
     canvas.series([100 * f["flicker"][key] if f["flicker"]["compared_pixels"] else None for f in frames], colour)
+for key, colour in (("mean_relative_change", (120, 190, 250)), ("p99_relative_change", (250, 160, 40))):
+    values = [100 * f["flicker"]["irradiance"][key] if f["flicker"]["compared_pixels"] and "irradiance" in f["flicker"]
+              else None for f in frames]
+    if any(v is not None for v in values):
+        canvas.series(values, colour)
 compare.write_png(png, canvas.img)

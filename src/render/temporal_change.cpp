@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "render/renderer.h"
 #include "shared/composite_pass.h"
 
@@ -12,19 +14,43 @@ namespace dvsgi::render {
 
 namespace {
 
+// Without normals, a tap is the same surface within this many times the
+// depth tolerance (a slanted floor's depth changes by a few per cent per pixel).
+constexpr float kTapTolerance = 4.0f;
+constexpr float kSameNormal = 0.9f;  // cos of about 25 degrees
+
+// The world point a camera saw at pixel (x, y) at depth `depth` along its axis.
+glm::vec3 pointSeen(const scene::PlacedCamera& camera, const glm::mat4& invProj, uint32_t w, uint32_t h, uint32_t x,
+                    uint32_t y, float depth) {
+    const glm::vec2 ndc((float(x) + 0.5f) / float(w) * 2.0f - 1.0f, (float(y) + 0.5f) / float(h) * 2.0f - 1.0f);
+    const glm::vec4 ray = invProj * glm::vec4(ndc, 1.0f, 1.0f);
+    glm::vec3 pc = glm::vec3(ray) / ray.w;
+    pc *= depth / -pc.z;
+    return glm::vec3(camera.world * glm::vec4(pc, 1.0f));
+}
+
 float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
 
-// Luminance of `img` at continuous pixel coordinates (pixel centres at +0.5), bilinear.
-float sampleLuminance(const image::ImageRGBA32F& img, glm::vec2 p) {
+// Luminance of `img` at continuous pixel coordinates (pixel centres at +0.5),
+// bilinear over the taps `sees` accepts (weights renormalized): beside a
+// silhouette the taps that saw another surface stay out, or the figure would
+// count the resampling of an edge as change. Negative when no tap is accepted.
+template <typename Sees>
+float sampleLuminance(const image::ImageRGBA32F& img, glm::vec2 p, const Sees& sees) {
     const glm::vec2 q = p - 0.5f;
     const int x0 = int(std::floor(q.x)), y0 = int(std::floor(q.y));
     const float fx = q.x - float(x0), fy = q.y - float(y0);
-    auto at = [&](int x, int y) {
-        x = std::clamp(x, 0, int(img.width) - 1);
-        y = std::clamp(y, 0, int(img.height) - 1);
-        return luminance(img.at(uint32_t(x), uint32_t(y)));
-    };
-    return (at(x0, y0) * (1 - fx) + at(x0 + 1, y0) * fx) * (1 - fy) + (at(x0, y0 + 1) * (1 - fx) + at(x0 + 1, y0 + 1) * fx) * fy;
+    float sum = 0.0f, weight = 0.0f;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            const uint32_t x = uint32_t(std::clamp(x0 + i, 0, int(img.width) - 1));
+            const uint32_t y = uint32_t(std::clamp(y0 + j, 0, int(img.height) - 1));
+            const float w = (i ? fx : 1.0f - fx) * (j ? fy : 1.0f - fy);
+            if (w <= 0.0f || !sees(x, y)) continue;
+            sum += w * luminance(img.at(x, y));
+            weight += w;
+        }
+    return weight > 0.0f ? sum / weight : -1.0f;
 }
 
 }  // namespace
@@ -38,7 +64,7 @@ TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& 
         before.depth.width != w || before.depth.height != h)
         throw std::invalid_argument("temporalChange: the frames' images differ in size");
     const glm::mat4 projA = projectionMatrix(after.camera, w, h), projB = projectionMatrix(before.camera, w, h);
-    const glm::mat4 invProjA = glm::inverse(projA);
+    const glm::mat4 invProjA = glm::inverse(projA), invProjB = glm::inverse(projB);
     const glm::mat4 viewB = viewMatrix(before.camera);
 
     struct Pair {
@@ -70,12 +96,35 @@ TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& 
                 ++out.rejected;
                 continue;
             }
-            const float seen = before.depth.at(uint32_t(pb.x), uint32_t(pb.y))[0];
-            if (!std::isfinite(seen) || std::abs(seen - (-inB.z)) > depthTolerance * (-inB.z)) {
+            // Frame t saw this surface at the pixel holding pb if its depth
+            // matches. Its bilinear taps (up to 1.5 pixels away) count when
+            // they saw the same surface: their points lie on this pixel's
+            // tangent plane (within the same tolerance, however slanted the
+            // surface) and, where normals were captured, face the same way
+            // (a crease is on both planes). A silhouette's or crease's other
+            // side stays out, or the figure would count resampling an edge as change.
+            const float expected = -inB.z;
+            const float seenHere = before.depth.at(uint32_t(pb.x), uint32_t(pb.y))[0];
+            if (!std::isfinite(seenHere) || std::abs(seenHere - expected) > depthTolerance * expected) {
                 ++out.rejected;
                 continue;
             }
-            pairs.push_back({sampleLuminance(termB, pb), luminance(termA.at(x, y))});
+            const bool normals = !after.normal.rgba.empty() && !before.normal.rgba.empty();
+            const glm::vec3 n = normals ? glm::make_vec3(after.normal.at(x, y)) : glm::vec3(0.0f);
+            auto sees = [&](uint32_t px, uint32_t py) {
+                const float seen = before.depth.at(px, py)[0];
+                if (!std::isfinite(seen)) return false;
+                if (!normals) return std::abs(seen - expected) <= kTapTolerance * depthTolerance * expected;
+                if (glm::dot(glm::make_vec3(before.normal.at(px, py)), n) < kSameNormal) return false;
+                const glm::vec3 tap = pointSeen(before.camera, invProjB, w, h, px, py, seen);
+                return std::abs(glm::dot(tap - world, n)) <= depthTolerance * expected;
+            };
+            const float valueB = sampleLuminance(termB, pb, sees);
+            if (valueB < 0.0f) {
+                ++out.rejected;
+                continue;
+            }
+            pairs.push_back({valueB, luminance(termA.at(x, y))});
         }
     out.compared = pairs.size();
     if (pairs.empty()) return out;
@@ -105,7 +154,9 @@ TemporalFrame captureIndirect(const Renderer& renderer) {
     TemporalFrame f;
     f.term = renderer.readTerm(shader::TERM_INDIRECT);
     f.irradiance = renderer.readTerm(shader::TERM_IRRADIANCE);
-    f.depth = renderer.readSurface().depth;
+    Renderer::SurfaceImages surface = renderer.readSurface();
+    f.depth = std::move(surface.depth);
+    f.normal = std::move(surface.normal);
     f.camera = renderer.camera();
     return f;
 }

@@ -2,7 +2,9 @@
 // scene did not: frame t's term reprojected into frame t+1 through the depth
 // buffer and both cameras, compared with frame t+1 (issue #11's flicker
 // figure). Pixels that frame t did not see (disocclusion, outside its view,
-// sky) are left out. Pure host code on read-back images.
+// sky) are left out, and frame t's term is interpolated only from the pixels
+// that saw the same surface (tangent plane and normal). Pure host code on
+// read-back images.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +23,7 @@ struct TemporalFrame {
     // texture detail a moving camera's resampling changes too.
     image::ImageRGBA32F irradiance;
     image::ImageRGBA32F depth;  // r = distance along the camera axis (m), +inf for no geometry (readSurface)
+    image::ImageRGBA32F normal;  // world normal (readSurface); empty: taps are told apart by depth alone
     scene::PlacedCamera camera;
 };
 
