@@ -1,0 +1,35 @@
+#!/usr/bin/python3
+"""Prints one markdown table row per `dvsgi bench --camera-path` JSON: the median (and range) over
+the frames that compared pixels of the flicker figure's mean change and 99th percentile, for the
+indirect term and for its irradiance (before the albedo), and the median GPU ms of a frame
+(docs/benchmarks.md, "At 30 frames per second").
+Usage: scripts/flicker-medians.py BENCH.json..."""
+import json
+import statistics
+import sys
+
+
+def summary(values, digits):
+    values = [100.0 * v for v in values]
+    return f"{statistics.median(values):.{digits}f} % ({min(values):.{digits}f}–{max(values):.{digits}f})"
+
+
+print("| file | term: mean change | term: 99th percentile | irradiance: mean change | "
+      "irradiance: 99th percentile | GPU ms |")
+print("|---|---|---|---|---|---|")
+for path in sys.argv[1:]:
+    with open(path) as f:
+        frames = json.load(f)["measurements"][0]["per_frame"]
+    frames = [fr for fr in frames if fr["flicker"]["compared_pixels"] > 0]
+    if not frames:
+        print(f"| {path} | – | – | – | – | – |")
+        continue
+    term = [fr["flicker"] for fr in frames]
+    irr = [fl.get("irradiance") for fl in term]
+    cells = [summary([fl["mean_relative_change"] for fl in term], 1), summary([fl["p99_relative_change"] for fl in term], 0)]
+    if all(irr):
+        cells += [summary([i["mean_relative_change"] for i in irr], 2), summary([i["p99_relative_change"] for i in irr], 1)]
+    else:
+        cells += ["–", "–"]
+    gpu = statistics.median(fr["gpu_ms"] for fr in frames)
+    print(f"| {path} | " + " | ".join(cells) + f" | {gpu:.0f} |")
