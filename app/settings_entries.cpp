@@ -201,6 +201,13 @@ std::vector<Setting> imageAndVoxels() {
         with(integer({"shadow-map", kImage, "N", "texels", "shadow map resolution per side", kAll, kNew}, 256, 8192,
                      FIELD(settings.shadowMapSize), true),
              "1024"),
+        with(toggle({"shadow-focus", kImage, "on|off", "",
+                     "with --clipmap, give each directional light a second shadow view over level 0's window "
+                     "around the camera (when that is under 0.7 of the scene's radius), so a large scene keeps "
+                     "fine shadows near the camera",
+                     kAll, kNew},
+                    FIELD(settings.shadowFocus)),
+             "off"),
         with(choice({"output", kImage, "T", "",
                      "write one term of the composition instead of the full image (irradiance: the indirect "
                      "diffuse light before the albedo, E/pi, as a white surface would reflect it)",

@@ -4,12 +4,12 @@
 Writes OUT_DIR/sponza-10x.gltf: sponza-sun.gltf's JSON with nine more instances of its mesh
 (`spacing` metres apart), its buffer and textures hard-linked from SHARED_DIR (copied only across
 file systems; OUT_DIR is never committed), the camera and the sun unchanged, so the camera stands in the first Sponza. Then
-renders the indirect term from that camera:
+renders from that camera (the whole image, and its indirect term from the --aov file):
   - one Sponza, fitted 128^3 grid (voxels of 0.338 m);
   - one Sponza, --clipmap L at level-0 voxels of the same edge;
   - ten Sponzas, the same clipmap (a fitted 128^3 grid on them would have voxels of 1.6 m);
-and prints the relative RMSE and mean-luminance ratio of each against the others
-(../shared/tools/compare.py), with each run's voxel grid.
+and prints the relative RMSE and mean-luminance ratio of each against the others, for the indirect
+term and for the whole image (../shared/tools/compare.py), with each run's voxel grid.
 
 usage: scripts/sponza-10x.py [BUILD_DIR] [SHARED_DIR] [OUT_DIR] [LEVELS]
 """
@@ -18,6 +18,8 @@ import os
 import shutil
 import subprocess
 import sys
+
+import OpenImageIO as oiio
 
 build = sys.argv[1] if len(sys.argv) > 1 else "build"
 shared = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else "../shared")
@@ -58,7 +60,7 @@ with open(big, "w") as f:
 
 # The fitted 128^3 grid's voxel on one Sponza: its longest side plus 9 voxels of margin, over 128.
 voxel = "%.6f" % ((17.999 + 19.209) / (128 - 9))
-common = ["--width", "320", "--height", "180", "--output", "indirect", "--voxels", "128", "--shadow-map", "4096"]
+common = ["--width", "320", "--height", "180", "--voxels", "128", "--shadow-map", "4096"]
 runs = [
     ("one Sponza, fitted 128^3", "one-fitted", source, []),
     ("one Sponza, clipmap", "one-clipmap", source, ["--clipmap", levels, "--clipmap-voxel", voxel]),
@@ -66,9 +68,15 @@ runs = [
 ]
 for label, name, scene, extra in runs:
     p = subprocess.run([os.path.join(build, "dvsgi"), "render", scene, *common, *extra,
-                        "--out", os.path.join(out, name + ".exr")], check=True, capture_output=True, text=True)
+                        "--out", os.path.join(out, name + "-full.exr"), "--aov", os.path.join(out, name + "-aov.exr")],
+                       check=True, capture_output=True, text=True)
     grid = [l for l in p.stdout.splitlines() if l.startswith("voxel grid") or l.startswith("voxel clipmap")]
     print("%s: %s" % (label, " | ".join(grid)))
+    # The indirect term of the same frame, as an RGB EXR for compare.py.
+    aov = oiio.ImageBuf(os.path.join(out, name + "-aov.exr"))
+    names = aov.spec().channelnames
+    rgb = [names.index("indirect." + c) for c in "RGB"]
+    oiio.ImageBufAlgo.channels(aov, tuple(rgb), ("R", "G", "B")).write(os.path.join(out, name + ".exr"))
 
 
 def metrics(a, b):
@@ -80,8 +88,10 @@ def metrics(a, b):
         return json.load(f)
 
 
-print("| candidate | reference | relative RMSE | mean luminance ratio |")
-print("|---|---|---|---|")
+print("| candidate | reference | indirect term: relative RMSE | mean luminance ratio | "
+      "whole image: relative RMSE | mean luminance ratio |")
+print("|---|---|---|---|---|---|")
 for a, b in [("ten-clipmap", "one-clipmap"), ("ten-clipmap", "one-fitted"), ("one-clipmap", "one-fitted")]:
-    m = metrics(a, b)
-    print("| %s | %s | %.3f | %.3f |" % (a, b, m["rel_rmse"], m["mean_lum_ratio"]))
+    m, f = metrics(a, b), metrics(a + "-full", b + "-full")
+    print("| %s | %s | %.3f | %.3f | %.3f | %.3f |" % (a, b, m["rel_rmse"], m["mean_lum_ratio"],
+                                                      f["rel_rmse"], f["mean_lum_ratio"]))

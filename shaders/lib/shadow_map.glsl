@@ -1,13 +1,21 @@
 // Shadow-map visibility for one light. Needs `shadowViews[]` (GpuShadowView)
 // and `shadowMap` (sampler2DArrayShadow) declared by the including shader.
 // Point lights own six views (+X -X +Y -Y +Z -Z); the face is the dominant axis
-// of the light-to-point vector.
+// of the light-to-point vector. A directional light with two views has one
+// around the camera first (render/shadows.h, ShadowFocus), used where the
+// point and its filter taps fall inside it, and the whole scene's second.
 float shadowVisibility(GpuLight light, vec3 P, vec3 N, float normalOffsetTexels) {
     uint count = light.shadow.y;
     if (count == 0u) return 1.0;
     uint view = light.shadow.x;
     vec3 fromLight = P - light.position.xyz;
-    if (count == 6u) {
+    if (count == 2u) {
+        GpuShadowView focus = shadowViews[view];
+        vec4 clip = focus.viewProj * vec4(P + N * focus.params.x * normalOffsetTexels, 1.0);
+        // Two texels of margin keep the bilinear compare inside the map.
+        float inside = 1.0 - 4.0 / float(textureSize(shadowMap, 0).x);
+        if (any(greaterThan(abs(clip.xy / clip.w), vec2(inside)))) view += 1u;
+    } else if (count == 6u) {
         vec3 a = abs(fromLight);
         if (a.x >= a.y && a.x >= a.z) view += fromLight.x > 0.0 ? 0u : 1u;
         else if (a.y >= a.z) view += fromLight.y > 0.0 ? 2u : 3u;

@@ -129,7 +129,19 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
 void Renderer::uploadLights() {
     const std::vector<glm::mat4> world = scene::worldMatrices(scene_);
     const std::vector<scene::PlacedLight> placed = scene::placedLights(scene_, world);
-    LightSetup setup = setupLights(placed, sceneGpu_->bounds, settings_.shadowMapSize, settings_.shadows);
+    // With a clipmap the camera walks through a scene that may be far larger
+    // than level 0: directional shadows get a view of their own over level 0's
+    // window (its half-diagonal around the camera), so the finest voxels and
+    // the pixels near the camera keep shadows as fine as in a small scene.
+    ShadowFocus focus;
+    if (settings_.shadowFocus && settings_.clipmap.levels > 0 && settings_.voxels > 0) {
+        const float base = settings_.clipmap.voxelSize > 0.0f
+                               ? settings_.clipmap.voxelSize
+                               : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, settings_.voxels, settings_.clipmap.levels);
+        focus = {glm::vec3(camera_.world[3]), 0.5f * float(settings_.voxels) * base};
+    }
+    LightSetup setup =
+        setupLights(placed, sceneGpu_->bounds, settings_.shadowMapSize, settings_.shadows, focus);
     for (size_t i = 0; i < placed.size(); ++i)
         for (const auto& [name, mode] : settings_.lightOcclusion)
             if (placed[i].light.name == name) setup.lights[i].shadow.z = uint32_t(mode);
@@ -490,7 +502,7 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
            a.hasVoxelBox != b.hasVoxelBox || a.voxelBoxMin != b.voxelBoxMin || a.voxelBoxMax != b.voxelBoxMax ||
            a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.pv.rsm != b.pv.rsm || a.pv.views != b.pv.views ||
            a.gather.traceScale != b.gather.traceScale || a.clipmap.levels != b.clipmap.levels ||
-           a.clipmap.voxelSize != b.clipmap.voxelSize ||
+           a.clipmap.voxelSize != b.clipmap.voxelSize || a.shadowFocus != b.shadowFocus ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
 }

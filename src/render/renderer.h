@@ -45,6 +45,7 @@ struct RenderSettings {
     uint32_t shadowMapSize = 2048;
     int camera = 0;
     bool shadows = true;
+    bool shadowFocus = true;  // with a clipmap: a directional shadow view over level 0's window (render/shadows.h)
     float normalOffsetTexels = 1.5f;  // shadow lookup offset along the normal
     uint32_t voxels = 128;            // N of the N^3 grid; 0 = no voxel passes
     uint32_t voxelSlots = 0;          // initial voxel slot capacity (0 = vxgi::defaultSlotCapacity); grows as needed

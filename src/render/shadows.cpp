@@ -36,10 +36,33 @@ sh::GpuShadowView perspectiveView(glm::vec3 eye, glm::vec3 dir, float fov, float
     return v;
 }
 
+// An orthographic view along `dir` whose square covers the sphere (centre,
+// radius) and whose depth range covers the scene's sphere (everything that can
+// cast a shadow into it). The centre moves in whole texels across the light's
+// view, so a focus that follows the camera does not make the shadows shimmer.
+sh::GpuShadowView orthoView(glm::vec3 dir, glm::vec3 centre, float radius, glm::vec3 sceneCentre, float sceneRadius,
+                            uint32_t size) {
+    const float texel = 2.0f * radius / float(size);
+    const glm::mat4 turn = glm::lookAt(glm::vec3(0.0f), dir, upFor(dir));
+    glm::vec3 c = glm::vec3(turn * glm::vec4(centre, 1.0f));
+    c.x = std::round(c.x / texel) * texel;
+    c.y = std::round(c.y / texel) * texel;
+    centre = glm::vec3(glm::inverse(turn) * glm::vec4(c, 1.0f));
+    const float along = glm::dot(sceneCentre - centre, dir);
+    const float margin = sceneRadius * 0.01f;
+    const float front = along - sceneRadius - margin, back = along + sceneRadius + margin;
+    const glm::vec3 eye = centre + dir * (front - margin);
+    sh::GpuShadowView v{};
+    v.viewProj = glm::ortho(-radius, radius, -radius, radius, margin, back - front + margin) *
+                 glm::lookAt(eye, eye + dir, upFor(dir));
+    v.params = glm::vec4(texel, 0.0f, 0.0f, 0.0f);
+    return v;
+}
+
 }  // namespace
 
 LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,
-                       uint32_t shadowMapSize, bool shadows) {
+                       uint32_t shadowMapSize, bool shadows, const ShadowFocus& focus) {
     LightSetup out;
     const glm::vec3 center = bounds.valid() ? (bounds.min + bounds.max) * 0.5f : glm::vec3(0.0f);
     const float radius = bounds.valid() ? std::max(glm::length(bounds.max - bounds.min) * 0.5f, 1e-3f) : 1.0f;
@@ -56,13 +79,17 @@ LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scen
             const float farZ = glm::length(pl.position - center) + radius * 1.01f;
             const float nearZ = std::max(radius * 2e-3f, 1e-4f);
             if (l.type == scene::LightType::Directional) {
+                if (focus.radius > 0.0f && focus.radius < kShadowFocusFraction * radius) {
+                    out.views.push_back(orthoView(dir, focus.centre, focus.radius, center, radius, shadowMapSize));
+                    g.shadow.y = 1;
+                }
                 sh::GpuShadowView v{};
                 const glm::vec3 eye = center - dir * (2.0f * radius);
                 v.viewProj = glm::ortho(-radius, radius, -radius, radius, radius * 0.5f, radius * 3.5f) *
                              glm::lookAt(eye, center, upFor(dir));
                 v.params = glm::vec4(2.0f * radius / float(shadowMapSize), 0.0f, 0.0f, 0.0f);
                 out.views.push_back(v);
-                g.shadow.y = 1;
+                g.shadow.y += 1;
             } else if (l.type == scene::LightType::Spot) {
                 const float fov = std::min(2.0f * l.outerConeAngle * 1.05f, glm::radians(170.0f));
                 out.views.push_back(perspectiveView(pl.position, dir, fov, nearZ, farZ, shadowMapSize));

@@ -1,5 +1,8 @@
 // Shadow maps for every light: one layer of a depth array per view.
-// Directional: an orthographic view fitted to the scene's bounding sphere.
+// Directional: an orthographic view fitted to the scene's bounding sphere,
+// preceded, when a focus is given that is much smaller than the scene, by one
+// fitted to the focus (a sphere around the camera: the shader uses it for the
+// points inside it), so a large scene keeps fine shadows near the camera.
 // Spot: a perspective view covering the outer cone. Point: six 90-degree views.
 #pragma once
 
@@ -28,9 +31,19 @@ struct LightSetup {
     std::vector<shader::GpuShadowView> views;
 };
 
+// Where directional shadow maps need their detail: a sphere (radius 0: none).
+struct ShadowFocus {
+    glm::vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+// A focus smaller than this fraction of the scene's bounding radius gets its
+// own directional view; a larger one would gain little detail.
+inline constexpr float kShadowFocusFraction = 0.7f;
+
 // Builds the GPU light records and their shadow views from placed lights.
 LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,
-                       uint32_t shadowMapSize, bool shadows);
+                       uint32_t shadowMapSize, bool shadows, const ShadowFocus& focus = {});
 
 class ShadowPass {
 public:
