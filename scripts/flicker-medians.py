@@ -20,7 +20,8 @@ print("|---|---|---|---|---|---|")
 for path in sys.argv[1:]:
     with open(path) as f:
         frames = json.load(f)["measurements"][0]["per_frame"]
-    frames = [fr for fr in frames if fr["flicker"]["compared_pixels"] > 0]
+    # A first frame without a warm-up has nothing to compare with.
+    frames = [fr for fr in frames if "flicker" in fr and fr["flicker"]["compared_pixels"] > 0]
     if not frames:
         print(f"| {path} | – | – | – | – | – |")
         continue

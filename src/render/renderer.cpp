@@ -29,6 +29,21 @@ namespace dvsgi::render {
 
 namespace sh = dvsgi::shader;
 
+namespace {
+
+// Timing scopes one frame may record. Converging records three per bounce
+// with a fitted grid (frame, bounce, filtering); with a clipmap each bounce
+// runs level after level (a scratch clear, the bounce, the filter and an
+// atlas copy per level, then the fold), and each level adds its own
+// voxelization, scroll and light passes to the frame.
+uint32_t timerScopes(const RenderSettings& s) {
+    const uint32_t levels = s.voxels > 0 ? s.clipmap.levels : 0;
+    const uint32_t bounces = std::max({s.voxelLight.maxBounces, s.voxelLight.bounces, 1u});
+    return 64 + 16 * levels + (3 + 5 * levels) * bounces;
+}
+
+}  // namespace
+
 glm::mat4 viewMatrix(const scene::PlacedCamera& camera) { return glm::inverse(camera.world); }
 
 glm::mat4 projectionMatrix(const scene::PlacedCamera& camera, uint32_t width, uint32_t height) {
@@ -71,6 +86,17 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     // Textures larger than the device allows are box-filtered down (with a warning).
     scene::limitTextureSize(scene_, maxDim, &warnings_);
     sceneGpu_ = std::make_unique<gpuscene::SceneGpu>(ctx, scene);
+    // With a clipmap the camera walks through a scene that may be far larger
+    // than level 0: directional shadows get a view of their own over level 0's
+    // window (a square as wide as the window around the camera), so the finest
+    // voxels and the pixels near the camera keep shadows as fine as in a small
+    // scene. Decided once: the shadow-map array's layers are fixed here.
+    if (settings.shadowFocus && settings.clipmap.levels > 0 && settings.voxels > 0) {
+        const float base = settings.clipmap.voxelSize > 0.0f
+                               ? settings.clipmap.voxelSize
+                               : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, settings.voxels, settings.clipmap.levels);
+        shadowFocusRadius_ = shadowFocusRadius(sceneGpu_->bounds, 0.5f * float(settings.voxels) * base);
+    }
     uploadLights();
     frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),
                                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -91,9 +117,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     const bool clipmap = settings.clipmap.levels > 0 && settings.voxels > 0;
     lighting_ = std::make_unique<LightingPass>(ctx, clipmap);
     composite_ = std::make_unique<CompositePass>(ctx);
-    // Converging records three scopes per bounce (frame, bounce, filtering).
-    const uint32_t bounceScopes = 3 * std::max({settings.voxelLight.maxBounces, settings.voxelLight.bounces, 1u});
-    timers_ = std::make_unique<gpu::GpuTimers>(ctx, 64 + bounceScopes);
+    timers_ = std::make_unique<gpu::GpuTimers>(ctx, timerScopes(settings));
     gather_ = std::make_unique<GatherPass>(ctx, clipmap);
     if (settings.voxels == 0) {
         // The lighting pass always binds voxel volumes; without voxels it gets
@@ -129,17 +153,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
 void Renderer::uploadLights() {
     const std::vector<glm::mat4> world = scene::worldMatrices(scene_);
     const std::vector<scene::PlacedLight> placed = scene::placedLights(scene_, world);
-    // With a clipmap the camera walks through a scene that may be far larger
-    // than level 0: directional shadows get a view of their own over level 0's
-    // window (its half-diagonal around the camera), so the finest voxels and
-    // the pixels near the camera keep shadows as fine as in a small scene.
-    ShadowFocus focus;
-    if (settings_.shadowFocus && settings_.clipmap.levels > 0 && settings_.voxels > 0) {
-        const float base = settings_.clipmap.voxelSize > 0.0f
-                               ? settings_.clipmap.voxelSize
-                               : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, settings_.voxels, settings_.clipmap.levels);
-        focus = {glm::vec3(camera_.world[3]), 0.5f * float(settings_.voxels) * base};
-    }
+    const ShadowFocus focus{glm::vec3(camera_.world[3]), shadowFocusRadius_};
     LightSetup setup =
         setupLights(placed, sceneGpu_->bounds, settings_.shadowMapSize, settings_.shadows, focus);
     for (size_t i = 0; i < placed.size(); ++i)
@@ -523,7 +537,7 @@ bool Renderer::applySettings(const RenderSettings& s) {
                        s.lightOcclusion != settings_.lightOcclusion;
     settings_ = s;
     temporalState_.reset();  // the accumulated term belongs to the old settings
-    const uint32_t scopes = 64 + 3 * std::max({n.maxBounces, n.bounces, 1u});
+    const uint32_t scopes = timerScopes(s);
     if (scopes > timers_->capacity()) timers_ = std::make_unique<gpu::GpuTimers>(ctx_, scopes);
     if (light) {
         uploadLights();

@@ -223,6 +223,7 @@ private:
     std::unique_ptr<gpu::Buffer> pvViews_;
     uint32_t pvViewCount_ = 0;
     std::vector<shader::GpuShadowView> shadowViews_;  // host copy of the uploaded shadow views
+    float shadowFocusRadius_ = 0.0f;  // > 0: directional lights' view around the camera (render/shadows.h)
     // Extra G-buffers for pv, each rendered with its own FrameConstants:
     // reflective shadow maps, one per shadow view (settings.pv.rsm), and six
     // views around the camera (settings.pv.views).

@@ -61,6 +61,12 @@ sh::GpuShadowView orthoView(glm::vec3 dir, glm::vec3 centre, float radius, glm::
 
 }  // namespace
 
+float shadowFocusRadius(const scene::Bounds& bounds, float halfSide) {
+    if (!bounds.valid()) return 0.0f;
+    const float sceneRadius = glm::length(bounds.max - bounds.min) * 0.5f;
+    return halfSide > 0.0f && halfSide < kShadowFocusFraction * sceneRadius ? halfSide : 0.0f;
+}
+
 LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,
                        uint32_t shadowMapSize, bool shadows, const ShadowFocus& focus) {
     LightSetup out;
@@ -79,7 +85,7 @@ LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scen
             const float farZ = glm::length(pl.position - center) + radius * 1.01f;
             const float nearZ = std::max(radius * 2e-3f, 1e-4f);
             if (l.type == scene::LightType::Directional) {
-                if (focus.radius > 0.0f && focus.radius < kShadowFocusFraction * radius) {
+                if (focus.radius > 0.0f) {
                     out.views.push_back(orthoView(dir, focus.centre, focus.radius, center, radius, shadowMapSize));
                     g.shadow.y = 1;
                 }

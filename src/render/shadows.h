@@ -31,7 +31,8 @@ struct LightSetup {
     std::vector<shader::GpuShadowView> views;
 };
 
-// Where directional shadow maps need their detail: a sphere (radius 0: none).
+// Where directional shadow maps need their detail: a square of half-side
+// `radius` across the light around `centre` (radius 0: none).
 struct ShadowFocus {
     glm::vec3 centre{0.0f};
     float radius = 0.0f;
@@ -40,6 +41,9 @@ struct ShadowFocus {
 // A focus smaller than this fraction of the scene's bounding radius gets its
 // own directional view; a larger one would gain little detail.
 inline constexpr float kShadowFocusFraction = 0.7f;
+
+// `halfSide` where it is worth a view of its own in a scene of `bounds`, else 0.
+float shadowFocusRadius(const scene::Bounds& bounds, float halfSide);
 
 // Builds the GPU light records and their shadow views from placed lights.
 LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,

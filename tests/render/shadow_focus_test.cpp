@@ -63,20 +63,22 @@ TEST(ShadowFocus, DirectionalLightGetsAViewAroundTheFocusFirst) {
     const glm::vec3 dir = glm::vec3(focused.lights[0].direction);
     const glm::vec3 across = glm::normalize(glm::cross(dir, glm::vec3(0, 1, 0)));
     EXPECT_NEAR(std::abs(ndc(v, focus.centre + across * focus.radius).x), 1.0f, 2.0f * texelNdc);
-    // Every point of the scene's bounds lies within the view's depth range.
+    // Every point of the scene's bounds lies within the view's depth range
+    // (0..1: the project builds glm with GLM_FORCE_DEPTH_ZERO_TO_ONE).
     for (int corner = 0; corner < 8; ++corner) {
         const scene::Bounds b = bigBounds();
         const glm::vec3 p(corner & 1 ? b.max.x : b.min.x, corner & 2 ? b.max.y : b.min.y, corner & 4 ? b.max.z : b.min.z);
         const glm::vec4 c = v.viewProj * glm::vec4(p, 1.0f);
-        EXPECT_GE(c.z / c.w, -1.0f) << corner;
-        EXPECT_LE(c.z / c.w, 1.0f) << corner;
+        EXPECT_GT(c.z / c.w, 0.0f) << corner;
+        EXPECT_LT(c.z / c.w, 1.0f) << corner;
     }
     // A focus not much smaller than the scene gets no view of its own.
     const float sceneRadius = 0.5f * glm::length(bigBounds().max - bigBounds().min);
-    const render::LightSetup wide = render::setupLights(lights, bigBounds(), size, true,
-                                                        {focus.centre, 1.01f * render::kShadowFocusFraction * sceneRadius});
-    EXPECT_EQ(wide.views.size(), 1u);
-    EXPECT_EQ(wide.lights[0].shadow.y, 1u);
+    EXPECT_EQ(render::shadowFocusRadius(bigBounds(), 4.0f), 4.0f);
+    EXPECT_EQ(render::shadowFocusRadius(bigBounds(), 1.01f * render::kShadowFocusFraction * sceneRadius), 0.0f);
+    const render::LightSetup none = render::setupLights(lights, bigBounds(), size, true, {focus.centre, 0.0f});
+    EXPECT_EQ(none.views.size(), 1u);
+    EXPECT_EQ(none.lights[0].shadow.y, 1u);
 }
 
 // The focus follows the camera in whole texels: a fixed point's map
