@@ -1,6 +1,7 @@
 #include "bench_command.h"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -32,6 +33,13 @@
 namespace dvsgi::app {
 
 namespace {
+
+// The largest magnitude among `values` (0 for none).
+double largestAbs(const std::vector<double>& values) {
+    double largest = 0.0;
+    for (double v : values) largest = std::max(largest, std::abs(v));
+    return largest;
+}
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -225,6 +233,8 @@ nlohmann::json measurementJson(const Measurement& m, double copyGbps) {
             {"irradiance",
              {{"mean_relative_change", summaryJson(summarize(m.flickerIrradianceMean), m.flickerIrradianceMean)},
               {"p99_relative_change", summaryJson(summarize(m.flickerIrradianceP99), m.flickerIrradianceP99)}}}};
+    if (!m.scrollJumps.empty())
+        j["flicker"]["scroll_luminance_jump"] = {{"largest_abs", largestAbs(m.scrollJumps)}, {"samples", m.scrollJumps}};
     return j;
 }
 
@@ -315,6 +325,13 @@ void printTable(const std::vector<Measurement>& ms, const std::string& title) {
         });
         row("flicker of the irradiance: 99th percentile", [](const Measurement& m) {
             return m.flickerIrradianceP99.empty() ? std::string("-") : percentCell(m.flickerIrradianceP99);
+        });
+        row("largest mean indirect luminance jump at a clipmap scroll", [](const Measurement& m) {
+            if (m.scrollJumps.empty()) return std::string("-");
+            char buf[48];
+            std::snprintf(buf, sizeof buf, "%.2f %% (%zu scrolls)", 100.0 * largestAbs(m.scrollJumps),
+                          m.scrollJumps.size());
+            return std::string(buf);
         });
     }
     row("triangles static / dynamic", [](const Measurement& m) {

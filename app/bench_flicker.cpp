@@ -1,5 +1,7 @@
 #include "bench_flicker.h"
 
+#include <algorithm>
+
 namespace dvsgi::app {
 
 void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float time, const render::FrameStats& stats,
@@ -23,6 +25,17 @@ void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float 
             render::temporalChange(*previous, current, 0.02f, render::TemporalTerm::Irradiance);
         f["flicker"]["irradiance"] = {{"mean_relative_change", e.meanRelative},
                                       {"p99_relative_change", e.p99Relative}};
+        // The jump of mean indirect luminance over the pixels both frames
+        // saw, and whether a clipmap level scrolled this frame (its scroll
+        // pass ran): issue #11 bounds the jump at a scroll by 2 %.
+        const bool scrolled = std::any_of(stats.passes.begin(), stats.passes.end(),
+                                          [](const gpu::TimerResult& r) { return r.name == "clipmap scroll"; });
+        f["flicker"]["scrolled"] = scrolled;
+        if (c.compared > 0 && c.meanLuminanceBefore > 0.0) {
+            const double jump = c.meanLuminanceAfter / c.meanLuminanceBefore - 1.0;
+            f["flicker"]["luminance_jump"] = jump;
+            if (scrolled) m.scrollJumps.push_back(jump);
+        }
         if (c.compared > 0) {
             m.flickerMean.push_back(c.meanRelative);
             m.flickerP99.push_back(c.p99Relative);

@@ -69,6 +69,7 @@ struct Measurement {
     // the next (mean and 99th percentile of the relative change, per frame).
     std::vector<double> flickerMean, flickerP99;
     std::vector<double> flickerIrradianceMean, flickerIrradianceP99;  // the same before the albedo
+    std::vector<double> scrollJumps;  // mean indirect luminance after / before - 1 at frames where a clipmap scrolled
 };
 
 // A markdown table's header: the corner cell, then one column per measurement

@@ -129,6 +129,10 @@ check("camera path: flicker per frame, pixels compared", all(
       f.get("compared_pixels", 0) > 1000 and 0.0 <= f.get("mean_relative_change", -1) <= f.get("p99_relative_change", -1)
       and f.get("mean_indirect_luminance_before", 0) > 0 for f in flick), json.dumps(flick)[:500])
 check("camera path: flicker rows in the table", "flicker: mean relative change" in stdout, stdout[-800:])
+check("camera path: luminance jump per frame, no scroll without a clipmap", all(
+      f.get("scrolled") is False and abs(f.get("luminance_jump", 9.0) - (f.get("mean_indirect_luminance_after", 0.0)
+      / f.get("mean_indirect_luminance_before", 1.0) - 1.0)) < 1e-9 for f in flick)
+      and "scroll_luminance_jump" not in m3.get("flicker", {}), json.dumps(flick)[:500])
 
 # 4. --pv-tables at 32^3 with small images: both tables, every row measured,
 # pv's Hausdorff distance near the exact voxelizer's and most of its voxels.
