@@ -31,12 +31,12 @@ void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float 
         const bool scrolled = std::any_of(stats.passes.begin(), stats.passes.end(),
                                           [](const gpu::TimerResult& r) { return r.name == "clipmap scroll"; });
         f["flicker"]["scrolled"] = scrolled;
-        if (c.compared > 0 && c.meanLuminanceBefore > 0.0) {
-            const double jump = c.meanLuminanceAfter / c.meanLuminanceBefore - 1.0;
-            f["flicker"]["luminance_jump"] = jump;
-            if (scrolled) m.scrollJumps.push_back(jump);
-        }
         if (c.compared > 0) {
+            if (c.meanLuminanceBefore > 0.0) {
+                const double jump = c.meanLuminanceAfter / c.meanLuminanceBefore - 1.0;
+                f["flicker"]["luminance_jump"] = jump;
+                if (scrolled) m.scrollJumps.push_back(jump);
+            }
             m.flickerMean.push_back(c.meanRelative);
             m.flickerP99.push_back(c.p99Relative);
             m.flickerIrradianceMean.push_back(e.meanRelative);

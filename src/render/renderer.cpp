@@ -92,10 +92,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     // voxels and the pixels near the camera keep shadows as fine as in a small
     // scene. Decided once: the shadow-map array's layers are fixed here.
     if (settings.shadowFocus && settings.clipmap.levels > 0 && settings.voxels > 0) {
-        const float base = settings.clipmap.voxelSize > 0.0f
-                               ? settings.clipmap.voxelSize
-                               : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, settings.voxels, settings.clipmap.levels);
-        shadowFocusRadius_ = shadowFocusRadius(sceneGpu_->bounds, 0.5f * float(settings.voxels) * base);
+        shadowFocusRadius_ = shadowFocusRadius(sceneGpu_->bounds, 0.5f * float(settings.voxels) * clipBaseVoxel());
     }
     uploadLights();
     frame_ = std::make_unique<gpu::Buffer>(ctx, sizeof(sh::FrameConstants),

@@ -178,6 +178,7 @@ private:
     std::optional<vxgi::ClipTrace> bounceTrace() const;
     // Clipmap (renderer_clipmap.cpp): levels, windows, scrolls.
     void createClipmap();
+    float clipBaseVoxel() const;  // level 0's voxel edge (m)
     void recordClipmapVoxels(VkCommandBuffer cmd);
     void recordClipmapStatic(VkCommandBuffer cmd, size_t level, const glm::ivec3& windowMin);
     // Per level: `pass`, then its filtering (and with --clipmap, its atlas

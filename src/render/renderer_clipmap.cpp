@@ -51,6 +51,14 @@ std::vector<const vxgi::VoxelVolumes*> Renderer::levelVolumes() const {
     return v;
 }
 
+// Level 0's voxel edge: --clipmap-voxel, or the size that lets the coarsest
+// level's window hold the whole scene.
+float Renderer::clipBaseVoxel() const {
+    const RenderSettings& s = settings_;
+    return s.clipmap.voxelSize > 0.0f ? s.clipmap.voxelSize
+                                      : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, s.voxels, s.clipmap.levels);
+}
+
 // Called by the constructor once volumes_ (level 0) exists; the levels start
 // unplaced, so the first frame voxelizes each from scratch around the camera.
 void Renderer::createClipmap() {
@@ -61,8 +69,7 @@ void Renderer::createClipmap() {
                                  std::to_string(sh::MAX_CLIP_LEVELS));
     if (pv_) throw std::runtime_error("clipmap: not with --voxelizer pv (its cleanup keeps one fitted grid)");
     if (s.hasVoxelBox) throw std::runtime_error("clipmap: not with --voxel-box (the levels follow the camera)");
-    const float base = s.clipmap.voxelSize > 0.0f ? s.clipmap.voxelSize
-                                                   : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, s.voxels, levels);
+    const float base = clipBaseVoxel();
     clipLattice_ = vxgi::clipLattice(sceneGpu_->bounds, base);
     clip_.resize(levels);
     for (uint32_t l = 0; l < levels; ++l) {

@@ -77,12 +77,7 @@ TemporalChange temporalChange(const TemporalFrame& before, const TemporalFrame& 
         for (uint32_t x = 0; x < w; ++x) {
             const float d = after.depth.at(x, y)[0];
             if (!std::isfinite(d) || d <= 0.0f) continue;
-            // The camera-space ray through the pixel centre, scaled to the depth.
-            const glm::vec2 ndc((float(x) + 0.5f) / float(w) * 2.0f - 1.0f, (float(y) + 0.5f) / float(h) * 2.0f - 1.0f);
-            glm::vec4 ray = invProjA * glm::vec4(ndc, 1.0f, 1.0f);
-            glm::vec3 pc = glm::vec3(ray) / ray.w;
-            pc *= d / -pc.z;
-            const glm::vec3 world = glm::vec3(after.camera.world * glm::vec4(pc, 1.0f));
+            const glm::vec3 world = pointSeen(after.camera, invProjA, w, h, x, y, d);
             // Where frame t saw that point, and how far its surface was there.
             const glm::vec3 inB = glm::vec3(viewB * glm::vec4(world, 1.0f));
             const glm::vec4 clip = projB * glm::vec4(inB, 1.0f);
