@@ -16,7 +16,7 @@
 // dominant axis, as voxelize.geom does; each voxel column of its clipped
 // bounding box there holds at most a few candidate layers, those the plane
 // crosses over the column (|slope| <= 1 per axis), and the exact test decides
-// each. A triangle with more than VOXC_SMALL_COLUMNS columns queues tiles of
+// each. A triangle with more than pc.dispatch.w columns queues tiles of
 // VOXC_TILE^2 columns instead. Tile phase (indirect): one workgroup per tile,
 // one invocation per column.
 //
@@ -61,6 +61,10 @@ struct Triangle {
     bool planar;     // false for a degenerate triangle: every layer of the box is a candidate
     uint material;
 };
+// The invocation's triangle: one global, not a by-value argument (passed by
+// value, Sponza's 256^3 voxelization took 1.25x as long on lavapipe:
+// docs/benchmarks.md).
+Triangle t;
 
 vec3 project(vec3 p, uint axis) { return axis == 0u ? p.yzx : (axis == 1u ? p.zxy : p.xyz); }
 ivec3 project(ivec3 p, uint axis) { return axis == 0u ? p.yzx : (axis == 1u ? p.zxy : p.xyz); }
@@ -69,7 +73,7 @@ ivec3 unproject(ivec3 p, uint axis) { return axis == 0u ? p.zxy : (axis == 1u ? 
 vec3 loadVec3(uint at) { return vec3(vertexData[at], vertexData[at + 1u], vertexData[at + 2u]); }
 
 // False when the triangle's bounding box misses the grid.
-bool loadTriangle(uint draw, uint firstIndex, int vertexOffset, out Triangle t) {
+bool loadTriangle(uint draw, uint firstIndex, int vertexOffset) {
     GpuDraw d = draws[draw];
     mat3 normalMatrix = mat3(d.normalMatrix);
     for (uint k = 0u; k < 3u; ++k) {
@@ -149,7 +153,7 @@ vec3 nearestBarycentric(vec3 p, vec3 a, vec3 b, vec3 c) {
 
 // One sample of the triangle's material into `voxel` (projected coordinates
 // `q`: the alpha-blend threshold uses the pixel centre voxelize.frag would).
-void addSample(Triangle t, ivec3 voxel, ivec3 q) {
+void addSample(ivec3 voxel, ivec3 q) {
     vec3 bary = nearestBarycentric(vec3(voxel) + 0.5, t.p[0], t.p[1], t.p[2]);
     vec2 uv = bary.x * t.uv[0] + bary.y * t.uv[1] + bary.z * t.uv[2];
     GpuMaterial m = materials[t.material];
@@ -167,7 +171,7 @@ void addSample(Triangle t, ivec3 voxel, ivec3 q) {
     accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
 }
 
-void voxelizeColumn(Triangle t, ivec2 column) {
+void voxelizeColumn(ivec2 column) {
     int first = t.lo.z, last = t.hi.z;
     if (t.planar) {
         // The plane's depth over the closed column, from vertex 0; the margin
@@ -184,7 +188,7 @@ void voxelizeColumn(Triangle t, ivec2 column) {
     for (int layer = first; layer <= last; ++layer) {
         ivec3 q = ivec3(column, layer);
         ivec3 voxel = unproject(q, t.axis);
-        if (triangleTouchesVoxel(t.v, t.e, t.n, voxel)) addSample(t, voxel, q);
+        if (triangleTouchesVoxel(t.v[0], t.v[1], t.v[2], t.e[0], t.e[1], t.e[2], t.n, voxel)) addSample(voxel, q);
     }
 }
 
@@ -213,10 +217,9 @@ void trianglePhase() {
     uint local = gl_LocalInvocationID.x;
     if (local >= g.draw.w) return;
     uint firstIndex = g.draw.y + 3u * local;
-    Triangle t;
-    if (!loadTriangle(g.draw.x, firstIndex, int(g.draw.z), t)) return;
+    if (!loadTriangle(g.draw.x, firstIndex, int(g.draw.z))) return;
     ivec2 span = t.hi.xy - t.lo.xy + 1;
-    if (uint(span.x * span.y) > VOXC_SMALL_COLUMNS) {
+    if (uint(span.x * span.y) > pc.dispatch.w) {
         uvec2 tileSpan = (uvec2(span) + VOXC_TILE - 1u) / VOXC_TILE;
         uint count = tileSpan.x * tileSpan.y, slot;
         if (reserveTiles(count, slot)) {
@@ -225,21 +228,20 @@ void trianglePhase() {
         }
     }
     for (int v = t.lo.y; v <= t.hi.y; ++v)
-        for (int u = t.lo.x; u <= t.hi.x; ++u) voxelizeColumn(t, ivec2(u, v));
+        for (int u = t.lo.x; u <= t.hi.x; ++u) voxelizeColumn(ivec2(u, v));
 }
 
 void tilePhase() {
     uint tileIndex = gl_WorkGroupID.y * VOXC_TILE_ROW + gl_WorkGroupID.x;
     if (tileIndex >= indirect[3]) return;  // the last row's tail
     uvec4 item = tiles[tileIndex].item;
-    Triangle t;
-    if (!loadTriangle(item.x, item.y, int(item.z), t)) return;
+    if (!loadTriangle(item.x, item.y, int(item.z))) return;
     int tilesPerRow = (t.hi.x - t.lo.x + int(VOXC_TILE)) / int(VOXC_TILE);
     int tile = int(item.w), local = int(gl_LocalInvocationID.x);
     ivec2 column = t.lo.xy + ivec2(tile % tilesPerRow, tile / tilesPerRow) * int(VOXC_TILE) +
                    ivec2(local % int(VOXC_TILE), local / int(VOXC_TILE));
     if (any(greaterThan(column, t.hi.xy))) return;
-    voxelizeColumn(t, column);
+    voxelizeColumn(column);
 }
 
 void main() {

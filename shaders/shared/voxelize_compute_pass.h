@@ -12,10 +12,16 @@ DVSGI_BEGIN
 DVSGI_CONST(uint, VOXC_GROUP, 64);
 DVSGI_CONST(uint, VOXC_TILE, 8);
 // A triangle whose (grid-clipped) footprint along its dominant axis spans more
-// voxel columns than this is split into VOXC_TILE^2 tiles, one workgroup each,
-// instead of being walked by its one invocation (a Cornell wall at 128^3 is
-// 16384 columns: serial, it would hold the whole dispatch back).
-DVSGI_CONST(uint, VOXC_SMALL_COLUMNS, 32);
+// voxel columns than the push constant's threshold is split into VOXC_TILE^2
+// tiles, one workgroup each, instead of being walked by its one invocation (a
+// Cornell wall at 128^3 is 16384 columns: serial, it would hold the whole
+// dispatch back). On a GPU lanes are cheap and divergence is not, so small
+// tiles pay; a CPU device pays for every lane of a tile (each loads the
+// triangle) and little for divergence: Sponza's static voxelization at 256^3
+// on lavapipe took 2.7-3.1 s with 32 columns, 1.9 s with 128-512
+// (docs/benchmarks.md).
+DVSGI_CONST(uint, VOXC_SMALL_COLUMNS_GPU, 32);
+DVSGI_CONST(uint, VOXC_SMALL_COLUMNS_CPU, 256);
 // Tile work items one triangle phase can queue (16 MiB of VoxcTile). A
 // triangle whose tiles no longer fit is walked by its own invocation: slower,
 // same result. 65535 (the old bound, one dispatch row) overflowed on Sponza at
@@ -50,7 +56,8 @@ struct VoxelizeComputePush {
     uvec4 ids;  // x first VoxcGroup of this mode, y group count, z VOXELIZE_STATIC/DYNAMIC, w VOXC_PHASE_*
     uvec4 dispatch;  // x workgroups per row of a 2D triangle-phase dispatch (groups beyond 65535 wrap into y),
                      // y = 4 (bilinear taps), z = 2 (textures per material): loop counts the shader
-                     // compiler must not see, so each texture fetch stays one site (lib/material.glsl)
+                     // compiler must not see, so each texture fetch stays one site (lib/material.glsl);
+                     // w = the most columns a triangle walks alone (VOXC_SMALL_COLUMNS_*)
 };
 DVSGI_CHECK_SIZE(VoxelizeComputePush, 32);
 

@@ -221,4 +221,8 @@ void Voxelizer::voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& sc
     vkCmdEndRendering(cmd);
 }
 
+void Voxelizer::setComputeTileThreshold(uint32_t columns) {
+    if (compute_) compute_->setTileThreshold(columns);
+}
+
 }  // namespace dvsgi::vxgi

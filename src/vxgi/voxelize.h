@@ -67,6 +67,8 @@ public:
     // occupied voxels to the list (VoxelListPass::finish then counts them).
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
+    // Compute path only (ComputeVoxelizer::setTileThreshold); tests use it.
+    void setComputeTileThreshold(uint32_t columns);
     bool hardwareConservative() const { return hardware_; }
     VoxelizerKind kind() const { return kind_; }
 

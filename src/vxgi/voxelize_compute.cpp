@@ -41,7 +41,9 @@ void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh:
 }  // namespace
 
 ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene)
-    : ctx_(ctx), drawCount_(scene.ranges.size()) {
+    : ctx_(ctx), drawCount_(scene.ranges.size()),
+      smallColumns_(ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? sh::VOXC_SMALL_COLUMNS_CPU
+                                                                             : sh::VOXC_SMALL_COLUMNS_GPU) {
     if (!ctx.features.float64)
         throw std::runtime_error("voxelizer: compute needs the Vulkan feature shaderFloat64 (its exact triangle/voxel "
                                  "test), which " + ctx.deviceName + " lacks or the application did not enable; "
@@ -124,7 +126,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
-                                               glm::uvec4(row, 4, 2, 0)});
+                                               glm::uvec4(row, 4, 2, smallColumns_)});
     vkCmdDispatch(cmd, row, gpu::groupCount(count, row), 1);
 
     // The tiles the triangle phase queued; its atomics and the tile phase's
@@ -138,7 +140,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .flush(cmd);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TILES),
-                                               glm::uvec4(row, 4, 2, 0)});
+                                               glm::uvec4(row, 4, 2, smallColumns_)});
     vkCmdDispatchIndirect(cmd, indirect_.handle(), 0);
 }
 

@@ -28,6 +28,10 @@ public:
     // Adds one sample per (triangle, touched voxel) of the mode's draws.
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode) const;
+    // The most voxel columns a triangle walks alone before it is split into
+    // tiles (shared/voxelize_compute_pass.h); the device type picks it. Tests
+    // set 0 (every triangle tiled) and UINT32_MAX (none) to check both paths.
+    void setTileThreshold(uint32_t columns) { smallColumns_ = columns; }
 
 private:
     const gpu::Context& ctx_;
@@ -37,6 +41,7 @@ private:
     gpu::Buffer indirect_;  // the tile phase's dispatch
     uint32_t staticGroups_ = 0, dynamicGroups_ = 0;
     size_t drawCount_ = 0;
+    uint32_t smallColumns_ = 0;
 };
 
 }  // namespace dvsgi::vxgi

@@ -76,43 +76,54 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
     vxgi::Voxelizer voxelizer(context(), sceneGpu, hardware, kind);
     CoverageReport total;
     size_t triangles = 0;
-    for (size_t g = 0; g < grids.size(); ++g) {
-        const vxgi::GridSpec& grid = grids[g];
-        vxgi::VoxelVolumes volumes(context(), grid);
-        gpu::Tracker tracker = volumeTracker(volumes);
-        context().submitAndWait([&](VkCommandBuffer cmd) {
-            voxelizer.clearAll(cmd, tracker, volumes, nullptr);
-            voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
-        });
-        const VoxelSet gpu = readVoxels(volumes).occupancy();
-        const std::vector<Triangle> tris = voxelTriangles(s, grid);
-        triangles = tris.size();
-        // The compute path's boxes are grown (shared/voxelize_compute_pass.h);
-        // its reference is grown alike and must match exactly.
-        const double growth = kind == vxgi::VoxelizerKind::Compute ? double(shader::VOXC_BOX_GROWTH) : 0.0;
-        const VoxelSet ref = referenceVoxelize(tris, grid.n, growth);
-        const CoverageReport r = compareCoverage(ref, gpu);
-        for (const glm::ivec3& v : r.missList) {
-            std::string culprits;
-            for (const Triangle& t : tris)
-                if (triangleBoxOverlap(t, glm::dvec3(v), glm::dvec3(v) + 1.0)) culprits += "\n    " + describe(t);
-            ADD_FAILURE() << label << ": grid " << g << " misses voxel (" << v.x << ", " << v.y << ", " << v.z
-                          << "), touched by (voxel coordinates):" << culprits;
+    // The compute path runs twice: every triangle split into tiles, then every
+    // triangle walked by its own invocation (the device type picks a mix).
+    const bool compute = kind == vxgi::VoxelizerKind::Compute;
+    const std::vector<uint32_t> thresholds =
+        compute ? std::vector<uint32_t>{0u, UINT32_MAX} : std::vector<uint32_t>{0u};
+    for (uint32_t threshold : thresholds) {
+        for (size_t g = 0; g < grids.size(); ++g) {
+            if (compute) voxelizer.setComputeTileThreshold(threshold);
+            const vxgi::GridSpec& grid = grids[g];
+            const std::string where = label + (compute ? (threshold == 0 ? " (all tiled)" : " (none tiled)") : "") +
+                                      ": grid " + std::to_string(g);
+            vxgi::VoxelVolumes volumes(context(), grid);
+            gpu::Tracker tracker = volumeTracker(volumes);
+            context().submitAndWait([&](VkCommandBuffer cmd) {
+                voxelizer.clearAll(cmd, tracker, volumes, nullptr);
+                voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
+            });
+            const VoxelSet gpu = readVoxels(volumes).occupancy();
+            const std::vector<Triangle> tris = voxelTriangles(s, grid);
+            triangles = tris.size();
+            // The compute path's boxes are grown (shared/voxelize_compute_pass.h);
+            // its reference is grown alike and must match exactly.
+            const double growth = compute ? double(shader::VOXC_BOX_GROWTH) : 0.0;
+            const VoxelSet ref = referenceVoxelize(tris, grid.n, growth);
+            const CoverageReport r = compareCoverage(ref, gpu);
+            for (const glm::ivec3& v : r.missList) {
+                std::string culprits;
+                for (const Triangle& t : tris)
+                    if (triangleBoxOverlap(t, glm::dvec3(v), glm::dvec3(v) + 1.0)) culprits += "\n    " + describe(t);
+                ADD_FAILURE() << where << " misses voxel (" << v.x << ", " << v.y << ", " << v.z
+                              << "), touched by (voxel coordinates):" << culprits;
+            }
+            for (const glm::ivec3& v : r.farList) {
+                std::string near;
+                for (const Triangle& t : tris)
+                    if (triangleBoxOverlap(t, glm::dvec3(v) - 2.0, glm::dvec3(v) + 3.0)) near += "\n    " + describe(t);
+                ADD_FAILURE() << where << " marks voxel (" << v.x << ", " << v.y << ", " << v.z
+                              << "), more than one voxel away from every reference voxel; triangles within 2 voxels:"
+                              << near;
+            }
+            total.reference += r.reference;
+            total.gpu += r.gpu;
+            total.misses += r.misses;
+            total.extras += r.extras;
+            total.farExtras += r.farExtras;
         }
-        for (const glm::ivec3& v : r.farList) {
-            std::string near;
-            for (const Triangle& t : tris)
-                if (triangleBoxOverlap(t, glm::dvec3(v) - 2.0, glm::dvec3(v) + 3.0)) near += "\n    " + describe(t);
-            ADD_FAILURE() << label << ": grid " << g << " marks voxel (" << v.x << ", " << v.y << ", " << v.z
-                          << "), more than one voxel away from every reference voxel; triangles within 2 voxels:"
-                          << near;
-        }
-        total.reference += r.reference;
-        total.gpu += r.gpu;
-        total.misses += r.misses;
-        total.extras += r.extras;
-        total.farExtras += r.farExtras;
     }
+    // For the compute path the counts add both runs.
     std::printf("[%s, %s%s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
                 "extras %zu (%.1f%% of the reference), extras beyond 1 voxel %zu\n",
                 label.c_str(), vxgi::voxelizerName(kind), voxelizer.hardwareConservative() ? " (hardware conservative)" : "", triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
