@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 # Estimates how many tiles the compute voxelizer (voxelize.comp) queues for a
 # glTF scene at 128^3, 256^3 and 512^3: every triangle whose projected
-# footprint along its dominant axis spans more than VOXC_SMALL_COLUMNS (32)
-# voxel columns gets ceil(w/8) * ceil(h/8) tiles. The grid is approximated
-# as the bounds plus fitGrid's margin; meshes with translation/scale only.
-# Usage: scripts/compute-tiles.py SCENE.gltf
+# footprint along its dominant axis spans more than the threshold (voxel
+# columns: VOXC_SMALL_COLUMNS_GPU 32, VOXC_SMALL_COLUMNS_CPU 256) gets
+# ceil(w/8) * ceil(h/8) tiles. The grid is approximated as the bounds plus
+# fitGrid's margin; meshes with translation/scale only.
+# Usage: scripts/compute-tiles.py SCENE.gltf [THRESHOLD=32]
 import json
 import os
 import sys
@@ -12,6 +13,7 @@ import sys
 import numpy as np
 
 path = sys.argv[1]
+threshold = int(sys.argv[2]) if len(sys.argv) > 2 else 32
 g = json.load(open(path)); base = os.path.dirname(path)
 buf = open(os.path.join(base, g['buffers'][0]['uri']), 'rb').read()
 def acc(i, comps):
@@ -44,6 +46,6 @@ for N in (128, 256, 512):
     uv = np.array([[1, 2], [2, 0], [0, 1]])[axis]
     su = np.take_along_axis(span, uv, 1)
     cols = su[:, 0] * su[:, 1]
-    big = cols > 32
+    big = cols > threshold
     tiles = (np.ceil(su[:, 0] / 8) * np.ceil(su[:, 1] / 8))[big].sum()
     print(N, 'triangles', len(T), 'tiled', big.sum(), 'tiles', int(tiles), 'largest', int(cols.max()))

@@ -9,7 +9,13 @@
 #
 #   scripts/voxelize-ab.sh BASE_BIN NEW_BIN OUT_DIR [ROUNDS=2]
 #   DVSGI_SHARED=../shared
+# Both binaries run the compute voxelizer (--voxelizer compute), whatever the
+# device would pick.
 set -euo pipefail
+if [ $# -lt 3 ]; then
+  echo "usage: scripts/voxelize-ab.sh BASE_BIN NEW_BIN OUT_DIR [ROUNDS=2]" >&2
+  exit 2
+fi
 base=$(realpath "$1"); new=$(realpath "$2"); out=$(realpath -m "$3"); rounds=${4:-2}
 shared=${DVSGI_SHARED:-../shared}
 mkdir -p "$out"
@@ -20,14 +26,18 @@ for round in $(seq 1 "$rounds"); do
     for item in $scenes; do
       scene=${item%%:*}; voxels=${item##*:}; name=$(basename "$scene" .gltf)
       "$bin" bench "$shared/scenes/$scene" --bench-voxels "$voxels" --bench-frames 3 --bench-warmup 1 \
-        --bounces 1 --width 64 --height 36 --quiet --bench-out "$out/$name-$which-$round.json" >/dev/null
+        --bounces 1 --width 64 --height 36 --voxelizer compute --quiet \
+        --bench-out "$out/$name-$which-$round.json" >/dev/null
     done
   done
 done
-python3 - "$out" <<'PY'
+python3 - "$out" "$rounds" <<'PY'
 import glob, json, os, sys
 rows = {}
-for f in sorted(glob.glob(os.path.join(sys.argv[1], '*.json'))):
+rounds = int(sys.argv[2])
+for f in sorted(glob.glob(os.path.join(sys.argv[1], '*-*-*.json'))):
+    if int(f[:-5].rsplit('-', 1)[1]) > rounds:  # left from an earlier run with more rounds
+        continue
     name, which, rnd = os.path.basename(f)[:-5].rsplit('-', 2)
     for m in json.load(open(f))['measurements']:
         ms = [p['median_ms'] for p in m['passes'] if p['name'] == 'voxelize static']

@@ -26,8 +26,8 @@ bool separatedAcrossEdge(dvec3 e, dvec3 v0, dvec3 v1, dvec3 v2) {
            separatedOn(dvec3(e.y, -e.x, 0.0LF), v0, v1, v2);
 }
 
-// v0..v2: the triangle in voxel units; e0..e2: its edges v1 - v0, v2 - v1,
-// v0 - v2; n: crossExact(e0, e1). The three box axes are not tested: callers
+// p0..p2: the triangle in voxel units; e0..e2: its edges p1 - p0, p2 - p1,
+// p0 - p2; n: crossExact(e0, e1). The three box axes are not tested: callers
 // ask only about voxels whose grown box meets the triangle's bounding box,
 // which they cannot separate. Vectors rather than arrays (see voxelize.comp's
 // Triangle: by-value arrays measured slower on lavapipe).

@@ -18,8 +18,8 @@ DVSGI_CONST(uint, VOXC_TILE, 8);
 // dispatch back). On a GPU lanes are cheap and divergence is not, so small
 // tiles pay; a CPU device pays for every lane of a tile (each loads the
 // triangle) and little for divergence: Sponza's static voxelization at 256^3
-// on lavapipe took 2.7-3.1 s with 32 columns, 1.9 s with 128-512
-// (docs/benchmarks.md).
+// on lavapipe took 2.7-3.1 s with 32 columns, 1.9-2.0 s with 128 to 512
+// (docs/benchmarks.md, "The compute voxelizer on a CPU device").
 DVSGI_CONST(uint, VOXC_SMALL_COLUMNS_GPU, 32);
 DVSGI_CONST(uint, VOXC_SMALL_COLUMNS_CPU, 256);
 // Tile work items one triangle phase can queue (16 MiB of VoxcTile). A

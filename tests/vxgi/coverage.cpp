@@ -82,8 +82,8 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
     const std::vector<uint32_t> thresholds =
         compute ? std::vector<uint32_t>{0u, UINT32_MAX} : std::vector<uint32_t>{0u};
     for (uint32_t threshold : thresholds) {
+        if (compute) voxelizer.setComputeTileThreshold(threshold);
         for (size_t g = 0; g < grids.size(); ++g) {
-            if (compute) voxelizer.setComputeTileThreshold(threshold);
             const vxgi::GridSpec& grid = grids[g];
             const std::string where = label + (compute ? (threshold == 0 ? " (all tiled)" : " (none tiled)") : "") +
                                       ": grid " + std::to_string(g);
