@@ -17,8 +17,8 @@
 // bounding box there holds at most a few candidate layers, those the plane
 // crosses over the column (|slope| <= 1 per axis), and the exact test decides
 // each. A triangle with more than pc.dispatch.w columns queues tiles of
-// VOXC_TILE^2 columns instead. Tile phase (indirect; its own pipeline, built
-// with DVSGI_TILES): one workgroup per tile, one invocation per column.
+// VOXC_TILE^2 columns instead. Tile phase (indirect): one workgroup per tile,
+// one invocation per column.
 //
 // The sample: the material at the point of the triangle nearest the voxel
 // centre. It lies inside the triangle, so its UV never leaves the triangle's
@@ -244,14 +244,8 @@ void tilePhase() {
     voxelizeColumn(column);
 }
 
-// One pipeline per phase (DVSGI_TILES: the tile phase): llvmpipe runs both
-// sides of every branch under a mask, so a phase chosen at run time would pay
-// for the other's code in every invocation.
 void main() {
     materialTaps = pc.dispatch.y;
-#ifdef DVSGI_TILES
-    tilePhase();
-#else
-    trianglePhase();
-#endif
+    if (pc.ids.w == VOXC_PHASE_TRIANGLES) trianglePhase();
+    else tilePhase();
 }

@@ -33,6 +33,9 @@ DVSGI_CONST(uint, VOXC_MAX_TILES, 1u << 20);
 // z = 1, w = tiles queued.
 DVSGI_CONST(uint, VOXC_TILE_ROW, 65535);
 
+DVSGI_CONST(uint, VOXC_PHASE_TRIANGLES, 0);
+DVSGI_CONST(uint, VOXC_PHASE_TILES, 1);
+
 // One workgroup of the triangle phase: up to VOXC_GROUP consecutive triangles
 // of one draw, so the material (and its texture index) is uniform within the
 // workgroup, as Vulkan requires without non-uniform descriptor indexing.
@@ -50,7 +53,7 @@ struct VoxcTile {
 DVSGI_CHECK_SIZE(VoxcTile, 16);
 
 struct VoxelizeComputePush {
-    uvec4 ids;  // x first VoxcGroup of this mode, y group count, z VOXELIZE_STATIC/DYNAMIC, w unused
+    uvec4 ids;  // x first VoxcGroup of this mode, y group count, z VOXELIZE_STATIC/DYNAMIC, w VOXC_PHASE_*
     uvec4 dispatch;  // x workgroups per row of a 2D triangle-phase dispatch (groups beyond 65535 wrap into y),
                      // y = 4 (bilinear taps), z = 2 (textures per material): loop counts the shader
                      // compiler must not see, so each texture fetch stays one site (lib/material.glsl);

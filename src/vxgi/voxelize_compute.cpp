@@ -25,9 +25,6 @@ namespace sh = dvsgi::shader;
 const uint32_t kComp[] = {
 #include "shaders/voxelize.comp.inc"
 };
-const uint32_t kCompTiles[] = {
-#include "shaders/voxelize_tiles.comp.inc"
-};
 
 // Groups of up to VOXC_GROUP consecutive triangles, never two draws in one.
 void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out) {
@@ -67,8 +64,7 @@ ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::Scen
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::VoxelizeComputePush);
     layout.pushConstantStages = cs;
-    pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxelize (compute, triangles)");
-    tilePipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompTiles), layout, "voxelize (compute, tiles)");
+    pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxelize (compute)");
 
     std::vector<sh::VoxcGroup> groups;
     appendGroups(scene, false, groups);
@@ -108,31 +104,28 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)
         .flush(cmd);
-    const auto bindPhase = [&](const gpu::Pipeline& pipeline) {
-        gpu::bind(cmd, pipeline);
-        gpu::Descriptors()
-            .uniformBuffer(sh::BIND_VOXC_GRID, v.gridBuffer.handle())
-            .storageBuffer(sh::BIND_VOXC_DRAWS, scene.draws.handle())
-            .storageBuffer(sh::BIND_VOXC_MATERIALS, scene.materials.handle())
-            .storageImage(sh::BIND_VOXC_ACCUM, v.accum.view())
-            .storageBuffer(sh::BIND_VOXC_INDEX, v.index.handle())
-            .storageBuffer(sh::BIND_VOXC_VERTICES, scene.vertices.handle())
-            .storageBuffer(sh::BIND_VOXC_INDICES, scene.indices.handle())
-            .storageBuffer(sh::BIND_VOXC_GROUPS, groups_.handle())
-            .storageBuffer(sh::BIND_VOXC_TILES, tiles_.handle())
-            .storageBuffer(sh::BIND_VOXC_INDIRECT, indirect_.handle())
-            .storageBuffer(sh::BIND_VOXC_LIST, v.list.handle())
-            .push(ctx_, cmd, pipeline);
-        VkDescriptorSet textures = scene.textureTable->set();
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), sh::SET_TEXTURES, 1,
-                                &textures, 0, nullptr);
-    };
-    bindPhase(pipeline_);
+    gpu::bind(cmd, pipeline_);
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_VOXC_GRID, v.gridBuffer.handle())
+        .storageBuffer(sh::BIND_VOXC_DRAWS, scene.draws.handle())
+        .storageBuffer(sh::BIND_VOXC_MATERIALS, scene.materials.handle())
+        .storageImage(sh::BIND_VOXC_ACCUM, v.accum.view())
+        .storageBuffer(sh::BIND_VOXC_INDEX, v.index.handle())
+        .storageBuffer(sh::BIND_VOXC_VERTICES, scene.vertices.handle())
+        .storageBuffer(sh::BIND_VOXC_INDICES, scene.indices.handle())
+        .storageBuffer(sh::BIND_VOXC_GROUPS, groups_.handle())
+        .storageBuffer(sh::BIND_VOXC_TILES, tiles_.handle())
+        .storageBuffer(sh::BIND_VOXC_INDIRECT, indirect_.handle())
+        .storageBuffer(sh::BIND_VOXC_LIST, v.list.handle())
+        .push(ctx_, cmd, pipeline_);
+    VkDescriptorSet textures = scene.textureTable->set();
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_.layout(), sh::SET_TEXTURES, 1, &textures,
+                            0, nullptr);
     const uint32_t mode32 = dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC;
     // Past maxComputeWorkGroupCount[0] (65535 at least) the groups wrap into y.
     const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
-                       sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, 0),
+                       sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
                                                glm::uvec4(row, 4, 2, smallColumns_)});
     vkCmdDispatch(cmd, row, gpu::groupCount(count, row), 1);
 
@@ -145,9 +138,8 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)
         .flush(cmd);
-    bindPhase(tilePipeline_);
-    gpu::pushConstants(cmd, tilePipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
-                       sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, 0),
+    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
+                       sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TILES),
                                                glm::uvec4(row, 4, 2, smallColumns_)});
     vkCmdDispatchIndirect(cmd, indirect_.handle(), 0);
 }

@@ -35,8 +35,7 @@ public:
 
 private:
     const gpu::Context& ctx_;
-    gpu::Pipeline pipeline_;      // the triangle phase
-    gpu::Pipeline tilePipeline_;  // the tile phase (voxelize.comp built with DVSGI_TILES)
+    gpu::Pipeline pipeline_;
     gpu::Buffer groups_;    // shader::VoxcGroup: the static draws' groups, then the dynamic ones'
     gpu::Buffer tiles_;     // shader::VoxcTile[VOXC_MAX_TILES]
     gpu::Buffer indirect_;  // the tile phase's dispatch
