@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "vxgi/clipmap.h"
+
 namespace dvsgi::app {
 
 void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float time, const render::FrameStats& stats,
@@ -29,7 +31,7 @@ void recordFrameFlicker(const render::Renderer& renderer, uint32_t frame, float 
         // saw, and whether a clipmap level scrolled this frame (its scroll
         // pass ran): issue #11 bounds the jump at a scroll by 2 %.
         const bool scrolled = std::any_of(stats.passes.begin(), stats.passes.end(),
-                                          [](const gpu::TimerResult& r) { return r.name == "clipmap scroll"; });
+                                          [](const gpu::TimerResult& r) { return r.name == vxgi::kClipmapScrollTimer; });
         f["flicker"]["scrolled"] = scrolled;
         if (c.compared > 0) {
             if (c.meanLuminanceBefore > 0.0) {

@@ -156,7 +156,7 @@ ClipScrollPass::ClipScrollPass(const gpu::Context& ctx) : ctx_(ctx) {
 
 void ClipScrollPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                             const glm::ivec3& oldMin, const glm::ivec3& newMin, gpu::GpuTimers* timers) const {
-    gpu::GpuTimerScope timer(timers, cmd, "clipmap scroll");
+    gpu::GpuTimerScope timer(timers, cmd, kClipmapScrollTimer);
     tracker.image(v.accum, gpu::use::ComputeWrite).image(v.direct, gpu::use::ComputeWrite);
     tracker.buffer(v.index, gpu::use::BufferComputeReadWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeReadWrite).flush(cmd);

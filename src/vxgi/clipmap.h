@@ -26,6 +26,10 @@ class Tracker;
 
 namespace dvsgi::vxgi {
 
+// The scroll pass's timer scope: a frame whose timings hold it scrolled a
+// level (the bench's flicker figures look for it).
+inline constexpr const char* kClipmapScrollTimer = "clipmap scroll";
+
 struct ClipmapSettings {
     uint32_t levels = 0;     // 0 = one grid fitted to the scene
     float voxelSize = 0.0f;  // level 0's voxel edge (m); 0 = clipBaseVoxelSize

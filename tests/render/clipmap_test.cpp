@@ -312,11 +312,6 @@ TEST_F(Clipmap, EveryLevelIsTheFittedGridOfItsWindowRolled) {
     }
 }
 
-// Levels 1.. light, filter and copy their voxels one after the other through
-// one shared set of dense volumes (vxgi::DenseVolumes). With the direct light
-// only, every level's slab of the radiance atlas equals the radiance volume of
-// a fitted grid on its window, voxel for voxel: nothing of one level's light
-// reaches another's slab, nothing is lost to the shared scratch's clears.
 // Each bounce over a clipmap records a few timing scopes per level: sixteen
 // bounces over four levels must fit the renderer's timers (they did not
 // when the timers were sized for a fitted grid: "more than 256 scopes").
@@ -330,6 +325,11 @@ TEST_F(Clipmap, ManyBouncesOverManyLevelsFitTheTimers) {
     EXPECT_FALSE(st.passes.empty());
 }
 
+// Levels 1.. light, filter and copy their voxels one after the other through
+// one shared set of dense volumes (vxgi::DenseVolumes). With the direct light
+// only, every level's slab of the radiance atlas equals the radiance volume of
+// a fitted grid on its window, voxel for voxel: nothing of one level's light
+// reaches another's slab, nothing is lost to the shared scratch's clears.
 TEST_F(Clipmap, LevelsShareOneScratchYetEachSlabHoldsItsOwnLight) {
     const scene::Scene s = spreadScene();
     render::RenderSettings cs = clipSettings(3);
