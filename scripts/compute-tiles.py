@@ -2,8 +2,8 @@
 # Estimates how many tiles the compute voxelizer (voxelize.comp) queues for a
 # glTF scene at 128^3, 256^3 and 512^3: every triangle whose projected
 # footprint along its dominant axis spans more than the threshold (voxel
-# columns: VOXC_SMALL_COLUMNS_GPU 32, VOXC_SMALL_COLUMNS_CPU 256) gets
-# ceil(w/8) * ceil(h/8) tiles. The grid is approximated as the bounds plus
+# columns: VOXC_WALK_COLUMNS_GPU 32, VOXC_WALK_COLUMNS_CPU 256) gets
+# ceil(w/8) * ceil(h/8) tiles (one column per lane, as on GPUs). The grid is approximated as the bounds plus
 # fitGrid's margin; meshes with translation/scale only.
 # Usage: scripts/compute-tiles.py SCENE.gltf [THRESHOLD=32]
 import json

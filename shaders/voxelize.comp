@@ -16,9 +16,9 @@
 // dominant axis, as voxelize.geom does; each voxel column of its clipped
 // bounding box there holds at most a few candidate layers, those the plane
 // crosses over the column (|slope| <= 1 per axis), and the exact test decides
-// each. A triangle with more than pc.dispatch.w columns queues tiles of
-// VOXC_TILE^2 columns instead. Tile phase (indirect): one workgroup per tile,
-// one invocation per column.
+// each. A triangle with more than pc.tiling.x columns queues tiles instead.
+// Tile phase (indirect): one workgroup per tile, one invocation per
+// pc.tiling.y columns of a row (VOXC_TILE rows of VOXC_TILE invocations).
 //
 // The sample: the material at the point of the triangle nearest the voxel
 // centre. It lies inside the triangle, so its UV never leaves the triangle's
@@ -171,24 +171,53 @@ void addSample(ivec3 voxel, ivec3 q) {
     accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
 }
 
-void voxelizeColumn(ivec2 column) {
-    int first = t.lo.z, last = t.hi.z;
-    if (t.planar) {
-        // The plane's depth over the closed column, from vertex 0; the margin
-        // covers float rounding (candidates only: the exact test decides).
-        vec3 q0 = project(t.p[0], t.axis);
-        vec2 d = vec2(column) - q0.xy;
-        float z = q0.z + t.slope.x * d.x + t.slope.y * d.y;
-        float zmin = z + min(t.slope.x, 0.0) + min(t.slope.y, 0.0);
-        float zmax = z + max(t.slope.x, 0.0) + max(t.slope.y, 0.0);
-        float margin = 1e-3 + 1e-5 * (abs(q0.z) + abs(d.x) + abs(d.y));
-        first = max(first, int(floor(zmin - margin)));
-        last = min(last, int(floor(zmax + margin)));
-    }
-    for (int layer = first; layer <= last; ++layer) {
-        ivec3 q = ivec3(column, layer);
-        ivec3 voxel = unproject(q, t.axis);
-        if (triangleTouchesVoxel(t.v[0], t.v[1], t.v[2], t.e[0], t.e[1], t.e[2], t.n, voxel)) addSample(voxel, q);
+// The candidate layers of a column: those the plane crosses over the closed
+// column (from vertex 0; the margin covers float rounding, the exact test
+// decides), or every layer of the box for a degenerate triangle.
+void columnLayers(ivec2 column, out int first, out int last) {
+    first = t.lo.z;
+    last = t.hi.z;
+    if (!t.planar) return;
+    vec3 q0 = project(t.p[0], t.axis);
+    vec2 d = vec2(column) - q0.xy;
+    float z = q0.z + t.slope.x * d.x + t.slope.y * d.y;
+    float zmin = z + min(t.slope.x, 0.0) + min(t.slope.y, 0.0);
+    float zmax = z + max(t.slope.x, 0.0) + max(t.slope.y, 0.0);
+    float margin = 1e-3 + 1e-5 * (abs(q0.z) + abs(d.x) + abs(d.y));
+    first = max(first, int(floor(zmin - margin)));
+    last = min(last, int(floor(zmax + margin)));
+}
+
+// Every candidate voxel of the columns from..to (inclusive, projected order),
+// row by row, walked by one invocation. The walk stores its hits and samples
+// them VOXC_PENDING at a time in a loop of their own: llvmpipe runs an if's
+// body for every lane batch under a mask, so a sample taken inside the walk
+// cost every candidate of every lane its texture fetches and atomics
+// (docs/benchmarks.md).
+ivec3 pending[VOXC_PENDING];
+
+void walkColumns(ivec2 from, ivec2 to) {
+    ivec2 column = from;
+    int layer, last;
+    columnLayers(column, layer, last);
+    bool done = false;
+    while (!done) {
+        uint count = 0u;
+        while (!done && count < VOXC_PENDING) {
+            if (layer <= last) {
+                ivec3 voxel = unproject(ivec3(column, layer), t.axis);
+                if (triangleTouchesVoxel(t.v[0], t.v[1], t.v[2], t.e[0], t.e[1], t.e[2], t.n, voxel))
+                    pending[count++] = voxel;
+            }
+            if (++layer > last) {
+                if (++column.x > to.x) {
+                    column.x = from.x;
+                    done = ++column.y > to.y;
+                }
+                columnLayers(column, layer, last);
+            }
+        }
+        for (uint i = 0u; i < count; ++i) addSample(pending[i], project(pending[i], t.axis));
     }
 }
 
@@ -219,16 +248,16 @@ void trianglePhase() {
     uint firstIndex = g.draw.y + 3u * local;
     if (!loadTriangle(g.draw.x, firstIndex, int(g.draw.z))) return;
     ivec2 span = t.hi.xy - t.lo.xy + 1;
-    if (uint(span.x * span.y) > pc.dispatch.w) {
-        uvec2 tileSpan = (uvec2(span) + VOXC_TILE - 1u) / VOXC_TILE;
+    if (uint(span.x * span.y) > pc.tiling.x) {
+        uvec2 tileSize = uvec2(VOXC_TILE * pc.tiling.y, VOXC_TILE);
+        uvec2 tileSpan = (uvec2(span) + tileSize - 1u) / tileSize;
         uint count = tileSpan.x * tileSpan.y, slot;
         if (reserveTiles(count, slot)) {
             for (uint i = 0u; i < count; ++i) tiles[slot + i].item = uvec4(g.draw.x, firstIndex, g.draw.z, i);
             return;
         }
     }
-    for (int v = t.lo.y; v <= t.hi.y; ++v)
-        for (int u = t.lo.x; u <= t.hi.x; ++u) voxelizeColumn(ivec2(u, v));
+    walkColumns(t.lo.xy, t.hi.xy);
 }
 
 void tilePhase() {
@@ -236,12 +265,16 @@ void tilePhase() {
     if (tileIndex >= indirect[3]) return;  // the last row's tail
     uvec4 item = tiles[tileIndex].item;
     if (!loadTriangle(item.x, item.y, int(item.z))) return;
-    int tilesPerRow = (t.hi.x - t.lo.x + int(VOXC_TILE)) / int(VOXC_TILE);
+    // A tile is VOXC_TILE rows of VOXC_TILE lanes, each lane pc.tiling.y
+    // consecutive columns of its row.
+    int laneColumns = int(pc.tiling.y);
+    ivec2 tileSize = ivec2(int(VOXC_TILE) * laneColumns, int(VOXC_TILE));
+    int tilesPerRow = (t.hi.x - t.lo.x + tileSize.x) / tileSize.x;
     int tile = int(item.w), local = int(gl_LocalInvocationID.x);
-    ivec2 column = t.lo.xy + ivec2(tile % tilesPerRow, tile / tilesPerRow) * int(VOXC_TILE) +
-                   ivec2(local % int(VOXC_TILE), local / int(VOXC_TILE));
-    if (any(greaterThan(column, t.hi.xy))) return;
-    voxelizeColumn(column);
+    ivec2 from = t.lo.xy + ivec2(tile % tilesPerRow, tile / tilesPerRow) * tileSize +
+                 ivec2(local % int(VOXC_TILE) * laneColumns, local / int(VOXC_TILE));
+    if (any(greaterThan(from, t.hi.xy))) return;
+    walkColumns(from, ivec2(min(from.x + laneColumns - 1, t.hi.x), from.y));
 }
 
 void main() {

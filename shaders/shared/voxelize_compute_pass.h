@@ -12,16 +12,30 @@ DVSGI_BEGIN
 DVSGI_CONST(uint, VOXC_GROUP, 64);
 DVSGI_CONST(uint, VOXC_TILE, 8);
 // A triangle whose (grid-clipped) footprint along its dominant axis spans more
-// voxel columns than the push constant's threshold is split into VOXC_TILE^2
-// tiles, one workgroup each, instead of being walked by its one invocation (a
-// Cornell wall at 128^3 is 16384 columns: serial, it would hold the whole
-// dispatch back). On a GPU lanes are cheap and divergence is not, so small
-// tiles pay; a CPU device pays for every lane of a tile (each loads the
-// triangle) and little for divergence: Sponza's static voxelization at 256^3
-// on lavapipe took 2.7-3.1 s with 32 columns, 1.9-2.0 s with 128 to 512
-// (docs/benchmarks.md, "The compute voxelizer on a CPU device").
-DVSGI_CONST(uint, VOXC_SMALL_COLUMNS_GPU, 32);
-DVSGI_CONST(uint, VOXC_SMALL_COLUMNS_CPU, 256);
+// voxel columns than the walk threshold is split into tiles, one workgroup
+// each, instead of being walked by its one invocation (a Cornell wall at 128^3
+// is 16384 columns: serial, it would hold the whole dispatch back). A tile is
+// VOXC_TILE rows of VOXC_TILE invocations, each walking a run of consecutive
+// columns of its row. On a GPU lanes are cheap and divergence is not: small
+// tiles, one column per lane. A CPU device pays for every lane (each loads
+// the triangle) and little for divergence: longer walks, eight columns per
+// lane. Measured on lavapipe, Sponza 256^3: 32 walk columns took 1.4-1.6x as
+// long as 256, one column per lane 1.2x as long as eight, and the Cornell box
+// 2.3x (docs/benchmarks.md, "The compute voxelizer on a CPU device").
+DVSGI_CONST(uint, VOXC_WALK_COLUMNS_GPU, 32);
+DVSGI_CONST(uint, VOXC_LANE_COLUMNS_GPU, 1);
+DVSGI_CONST(uint, VOXC_WALK_COLUMNS_CPU, 256);
+DVSGI_CONST(uint, VOXC_LANE_COLUMNS_CPU, 8);
+// llvmpipe ends every loop of an invocation once its loops together have
+// looped 65535 times (test LavapipeLimits.LoopsShareOneIterationBudget): the
+// rest of a walk would be dropped without an error. A walk loops about once
+// per candidate (at most three a column) and, per hit, about a dozen times in
+// the sample's texture loops; the CPU walk stays far under the budget.
+DVSGI_CONST(uint, LLVMPIPE_LOOP_BUDGET, 65535);
+DVSGI_CONST(uint, VOXC_WALK_LOOPS_PER_COLUMN, 3 + 3 * 12);
+// Hits one invocation's walk collects before it samples them (voxelize.comp,
+// voxelizeColumns).
+DVSGI_CONST(uint, VOXC_PENDING, 32);
 // Tile work items one triangle phase can queue (16 MiB of VoxcTile). A
 // triangle whose tiles no longer fit is walked by its own invocation: slower,
 // same result. 65535 (the old bound, one dispatch row) overflowed on Sponza at
@@ -56,10 +70,11 @@ struct VoxelizeComputePush {
     uvec4 ids;  // x first VoxcGroup of this mode, y group count, z VOXELIZE_STATIC/DYNAMIC, w VOXC_PHASE_*
     uvec4 dispatch;  // x workgroups per row of a 2D triangle-phase dispatch (groups beyond 65535 wrap into y),
                      // y = 4 (bilinear taps), z = 2 (textures per material): loop counts the shader
-                     // compiler must not see, so each texture fetch stays one site (lib/material.glsl);
-                     // w = the most columns a triangle walks alone (VOXC_SMALL_COLUMNS_*)
+                     // compiler must not see, so each texture fetch stays one site (lib/material.glsl)
+    uvec4 tiling;    // x the most columns a triangle walks alone (VOXC_WALK_COLUMNS_*),
+                     // y columns per invocation in a tile (VOXC_LANE_COLUMNS_*)
 };
-DVSGI_CHECK_SIZE(VoxelizeComputePush, 32);
+DVSGI_CHECK_SIZE(VoxelizeComputePush, 48);
 
 DVSGI_CONST(uint, BIND_VOXC_GRID, 0);
 DVSGI_CONST(uint, BIND_VOXC_DRAWS, 1);

@@ -221,8 +221,8 @@ void Voxelizer::voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& sc
     vkCmdEndRendering(cmd);
 }
 
-void Voxelizer::setComputeTileThreshold(uint32_t columns) {
-    if (compute_) compute_->setTileThreshold(columns);
+void Voxelizer::setComputeTiling(ComputeTiling tiling) {
+    if (compute_) compute_->setTiling(tiling);
 }
 
 }  // namespace dvsgi::vxgi

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "gpu/pipeline.h"
+#include "vxgi/voxelize_compute.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
@@ -67,8 +68,8 @@ public:
     // occupied voxels to the list (VoxelListPass::finish then counts them).
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode, gpu::GpuTimers* timers) const;
-    // Compute path only (ComputeVoxelizer::setTileThreshold); tests use it.
-    void setComputeTileThreshold(uint32_t columns);
+    // Compute path only (ComputeVoxelizer::setTiling); tests use it.
+    void setComputeTiling(ComputeTiling tiling);
     bool hardwareConservative() const { return hardware_; }
     VoxelizerKind kind() const { return kind_; }
 

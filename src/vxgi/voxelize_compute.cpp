@@ -40,10 +40,23 @@ void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh:
 
 }  // namespace
 
+// llvmpipe would cut a longer walk short (shared/voxelize_compute_pass.h).
+static_assert(uint64_t(sh::VOXC_WALK_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
+static_assert(uint64_t(sh::VOXC_LANE_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
+
+ComputeTiling computeTilingFor(VkPhysicalDeviceType type) {
+    if (type == VK_PHYSICAL_DEVICE_TYPE_CPU) return {sh::VOXC_WALK_COLUMNS_CPU, sh::VOXC_LANE_COLUMNS_CPU};
+    return {sh::VOXC_WALK_COLUMNS_GPU, sh::VOXC_LANE_COLUMNS_GPU};
+}
+
+void ComputeVoxelizer::setTiling(ComputeTiling tiling) {
+    if (tiling.laneColumns == 0) throw std::invalid_argument("voxelizer: a tile invocation walks at least one column");
+    tiling_ = tiling;
+}
+
 ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene)
     : ctx_(ctx), drawCount_(scene.ranges.size()),
-      smallColumns_(ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? sh::VOXC_SMALL_COLUMNS_CPU
-                                                                             : sh::VOXC_SMALL_COLUMNS_GPU) {
+      tiling_(computeTilingFor(ctx.properties.deviceType)) {
     if (!ctx.features.float64)
         throw std::runtime_error("voxelizer: compute needs the Vulkan feature shaderFloat64 (its exact triangle/voxel "
                                  "test), which " + ctx.deviceName + " lacks or the application did not enable; "
@@ -124,9 +137,10 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     const uint32_t mode32 = dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC;
     // Past maxComputeWorkGroupCount[0] (65535 at least) the groups wrap into y.
     const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
+    const glm::uvec4 tiling(tiling_.walkColumns, tiling_.laneColumns, 0, 0);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
-                                               glm::uvec4(row, 4, 2, smallColumns_)});
+                                               glm::uvec4(row, 4, 2, 0), tiling});
     vkCmdDispatch(cmd, row, gpu::groupCount(count, row), 1);
 
     // The tiles the triangle phase queued; its atomics and the tile phase's
@@ -140,7 +154,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .flush(cmd);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TILES),
-                                               glm::uvec4(row, 4, 2, smallColumns_)});
+                                               glm::uvec4(row, 4, 2, 0), tiling});
     vkCmdDispatchIndirect(cmd, indirect_.handle(), 0);
 }
 

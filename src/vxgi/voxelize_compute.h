@@ -20,6 +20,14 @@ namespace dvsgi::vxgi {
 class VoxelVolumes;
 enum class VoxelizeMode;
 
+// How the compute voxelizer splits large triangles (shared/voxelize_compute_pass.h).
+struct ComputeTiling {
+    uint32_t walkColumns;  // the most voxel columns a triangle walks alone before it is split into tiles
+    uint32_t laneColumns;  // columns each invocation of a tile walks
+};
+// The tiling measured best for the device type (CPU devices walk longer).
+ComputeTiling computeTilingFor(VkPhysicalDeviceType type);
+
 class ComputeVoxelizer {
 public:
     // Throws when the device lacks shaderFloat64 (the exact test needs it).
@@ -28,10 +36,9 @@ public:
     // Adds one sample per (triangle, touched voxel) of the mode's draws.
     void voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpuscene::SceneGpu& scene,
                   const VoxelVolumes& volumes, VoxelizeMode mode) const;
-    // The most voxel columns a triangle walks alone before it is split into
-    // tiles (shared/voxelize_compute_pass.h); the device type picks it. Tests
-    // set 0 (every triangle tiled) and UINT32_MAX (none) to check both paths.
-    void setTileThreshold(uint32_t columns) { smallColumns_ = columns; }
+    // The device type picks the tiling; tests set others (every triangle
+    // tiled, none, one or several columns per lane) to check every path.
+    void setTiling(ComputeTiling tiling);
 
 private:
     const gpu::Context& ctx_;
@@ -41,7 +48,7 @@ private:
     gpu::Buffer indirect_;  // the tile phase's dispatch
     uint32_t staticGroups_ = 0, dynamicGroups_ = 0;
     size_t drawCount_ = 0;
-    uint32_t smallColumns_ = 0;
+    ComputeTiling tiling_;
 };
 
 }  // namespace dvsgi::vxgi

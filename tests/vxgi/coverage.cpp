@@ -76,17 +76,24 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
     vxgi::Voxelizer voxelizer(context(), sceneGpu, hardware, kind);
     CoverageReport total;
     size_t triangles = 0;
-    // The compute path runs twice: every triangle split into tiles, then every
-    // triangle walked by its own invocation (the device type picks a mix).
+    // The compute path runs three times: every triangle split into tiles of
+    // one column per lane, then of the CPU's run per lane, then every triangle
+    // walked by its own invocation (the device type picks a mix).
     const bool compute = kind == vxgi::VoxelizerKind::Compute;
-    const std::vector<uint32_t> thresholds =
-        compute ? std::vector<uint32_t>{0u, UINT32_MAX} : std::vector<uint32_t>{0u};
-    for (uint32_t threshold : thresholds) {
-        if (compute) voxelizer.setComputeTileThreshold(threshold);
+    struct Run {
+        vxgi::ComputeTiling tiling;
+        const char* name;
+    };
+    const std::vector<Run> runs =
+        compute ? std::vector<Run>{{{0u, 1u}, " (all tiled, 1 column per lane)"},
+                                   {{0u, shader::VOXC_LANE_COLUMNS_CPU}, " (all tiled, several columns per lane)"},
+                                   {{UINT32_MAX, 1u}, " (none tiled)"}}
+                : std::vector<Run>{{{0u, 1u}, ""}};
+    for (const Run& run : runs) {
+        if (compute) voxelizer.setComputeTiling(run.tiling);
         for (size_t g = 0; g < grids.size(); ++g) {
             const vxgi::GridSpec& grid = grids[g];
-            const std::string where = label + (compute ? (threshold == 0 ? " (all tiled)" : " (none tiled)") : "") +
-                                      ": grid " + std::to_string(g);
+            const std::string where = label + run.name + ": grid " + std::to_string(g);
             vxgi::VoxelVolumes volumes(context(), grid);
             gpu::Tracker tracker = volumeTracker(volumes);
             context().submitAndWait([&](VkCommandBuffer cmd) {
@@ -123,7 +130,7 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
             total.farExtras += r.farExtras;
         }
     }
-    // For the compute path the counts add both runs.
+    // For the compute path the counts add all three runs.
     std::printf("[%s, %s%s] %zu triangles, %zu grid(s) of %u^3: reference %zu voxels, GPU %zu, misses %zu, "
                 "extras %zu (%.1f%% of the reference), extras beyond 1 voxel %zu\n",
                 label.c_str(), vxgi::voxelizerName(kind), voxelizer.hardwareConservative() ? " (hardware conservative)" : "", triangles, grids.size(), grids.empty() ? 0u : grids[0].n, total.reference, total.gpu,
