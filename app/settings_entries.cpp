@@ -342,6 +342,14 @@ std::vector<Setting> imageAndVoxels() {
                      "step factor beta of the voxel bounce's cones (the pixels' cones use --cone-step)", kAll, kFrame},
                     0.05, 4, FIELD(settings.voxelLight.bounceStepFactor)),
              "0.5", "a step factor beta in 0.05..4"),
+        with(number({"voxel-temporal-alpha", kVoxelLight, "A", "",
+                     "feedback frames (--frames, dvsgi view): each voxel's bounced radiance moves only a fraction A "
+                     "of the way from what it had last frame, smoothing light that changes between frames (a moving "
+                     "object, a clipmap scroll); voxels new this frame, and every voxel after a change of lights, "
+                     "static geometry or settings, take the new value. 1 = no blending",
+                     kAll, kFrame},
+                    0.01, 1, FIELD(settings.voxelLight.temporalAlpha)),
+             "0.5", "a weight in 0.01..1"),
         with(choice({"emitters", kVoxelLight, "lights|cones", "",
                      "emissive surfaces lit as area lights (their triangles become --emitter-patches patches, "
                      "evaluated at voxels and pixels with voxel visibility) or only gathered by the cones (the "

@@ -27,6 +27,7 @@ layout(set = 0, binding = BIND_BOUNCE_ACCUM, r32f) uniform readonly image3D accu
 layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D direct;
 layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
 layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { float stats[]; };
+layout(set = 0, binding = BIND_BOUNCE_HISTORY, rgba32ui) uniform uimage3D history;
 VOXEL_LIST_BLOCK(BIND_BOUNCE_LIST, readonly);
 layout(push_constant) uniform Push { BouncePush pc; };
 
@@ -38,6 +39,26 @@ layout(push_constant) uniform Push { BouncePush pc; };
 
 const uint GROUP_SIZE = VOXEL_LIST_GROUP;
 shared vec2 partial[GROUP_SIZE];
+
+// Feedback frames (--voxel-temporal-alpha): the reflected (bounced) light
+// moves a fraction alpha of the way from what the same voxel reflected after
+// last frame's bounce, so indirect light that changes from frame to frame (a
+// moving object, a clipmap scroll's new neighbours) changes smoothly; direct
+// light and emission are never delayed. A slot that held another voxel last
+// frame, or was not bounced then, or any slot while the host holds the
+// history back (after a change of lights, static geometry or settings), takes
+// the new value as it is.
+vec3 blendWithHistory(uint slot, vec3 value) {
+    ivec3 texel = slotTexel(slot, 0u);
+    uvec4 h = imageLoad(history, texel);
+    uint key = list.entries[slot];
+    if (h.z == key && h.w == pc.blend.y) {
+        vec3 before = vec3(unpackHalf2x16(h.x), unpackHalf2x16(h.y).x);
+        value = before + uintBitsToFloat(pc.blend.z) * (value - before);
+    }
+    imageStore(history, texel, uvec4(packHalf2x16(value.rg), packHalf2x16(vec2(value.b, 0.0)), key, pc.blend.x));
+    return value;
+}
 
 vec4 bounced(ivec3 v, uint slot) {
     vec4 d = imageLoad(direct, slotTexel(slot, 0u));
@@ -55,7 +76,9 @@ vec4 bounced(ivec3 v, uint slot) {
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
     vec3 E = gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
-    return vec4(d.rgb + voxelAlbedo(slot) / PI * E, d.a);
+    vec3 reflected = voxelAlbedo(slot) / PI * E;
+    if (pc.blend.x != 0u) reflected = blendWithHistory(slot, reflected);
+    return vec4(d.rgb + reflected, d.a);
 }
 
 void main() {

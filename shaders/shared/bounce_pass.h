@@ -12,8 +12,13 @@ DVSGI_BEGIN
 struct BouncePush {
     ConeParams cone;
     uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS), y (clipmap) the voxels' level
+    // Temporal blending of the reflected light (BIND_BOUNCE_HISTORY): x this
+    // frame's history tag (0 = no blending, nothing read or written), y the tag
+    // a slot's history must carry to be blended with (last frame's), z the
+    // blend weight of this frame's value (float bits).
+    uvec4 blend;
 };
-DVSGI_CHECK_SIZE(BouncePush, 48);
+DVSGI_CHECK_SIZE(BouncePush, 64);
 
 // What each workgroup (VOXEL_LIST_GROUP list entries) writes when asked, at
 // its flat group index: the sum over its voxels of |luminance change| and of
@@ -27,6 +32,10 @@ DVSGI_CONST(uint, BIND_BOUNCE_OUT, 5);        // radiance (storage, read for the
 DVSGI_CONST(uint, BIND_BOUNCE_STATS, 6);      // float[BOUNCE_STATS_FLOATS] per workgroup
 DVSGI_CONST(uint, BIND_BOUNCE_LIST, 7);       // occupied-voxel list: one invocation per entry
 DVSGI_CONST(uint, BIND_BOUNCE_GRID, 8);       // clipmap: the bounced level's own grid (BIND_CONE_GRID holds all levels)
+// Per slot (slotTexel(slot, 0)), RGBA32UI: the light the slot's voxel
+// reflected after last frame's bounce (x = rg, y = b, as half floats), z the list entry
+// (packed voxel) it belonged to, w the frame tag it was written with.
+DVSGI_CONST(uint, BIND_BOUNCE_HISTORY, 9);
 
 DVSGI_END
 

@@ -173,6 +173,7 @@ void Renderer::uploadLights() {
     if (!std::equal(records, records + lightBytes, lightRecords_.begin(), lightRecords_.end())) {
         lightRecords_.assign(records, records + lightBytes);
         temporalState_.drop(lightSettleFrames());
+        dropVoxelHistory(lightSettleFrames());
     }
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
     shadowViews_ = setup.views;
@@ -253,10 +254,17 @@ void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
 // through the windows the directional volumes were filtered in; statistics:
 // level 0's.
 void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::VoxelVolumes& v,
-                                 const vxgi::ClipTrace* trace, bool withStats) {
+                                 const vxgi::ClipTrace* trace, bool withStats, bool blend) {
     const vxgi::ConeSettings cone = vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor);
+    vxgi::VoxelHistory history;
+    if (blend) {
+        // UINT32_MAX: a tag no frame writes, so nothing is blended with.
+        const bool use = lastHistoryTag_ != 0 && historyHold_ == 0;
+        history = {&voxelHistory_[l], historyTag_, use ? lastHistoryTag_ : UINT32_MAX,
+                   settings_.voxelLight.temporalAlpha};
+    }
     bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, withStats ? bounceStats_.get() : nullptr,
-                    timers_.get(), trace, uint32_t(l));
+                    timers_.get(), trace, uint32_t(l), blend ? &history : nullptr);
 }
 
 // Voxelization, shadow maps and the voxel light up to (not including) the
@@ -290,11 +298,12 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     // A feedback frame bounces once from the directional volumes, which still
     // hold the previous frame's filtered radiance: one more bounce of light.
     const bool feedback = feedbackFrame();
+    const bool blend = blendsVoxelRadiance();
     const std::optional<vxgi::ClipTrace> trace = bounceTrace();
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {
                      inject_->record(cmd, tracker_, v, shadows, light, t);
-                     if (feedback) recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, false);
+                     if (feedback) recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, false, blend);
                  });
 }
 
@@ -400,7 +409,15 @@ double Renderer::bounceChange() const {
 
 FrameStats Renderer::renderFrame() {
     timers_->reset();
-    if (staticDirty_) temporalState_.drop(lightSettleFrames());
+    if (staticDirty_) {
+        temporalState_.drop(lightSettleFrames());
+        dropVoxelHistory(lightSettleFrames());
+    }
+    const bool blend = blendsVoxelRadiance();
+    if (blend) {
+        prepareVoxelHistory();
+        if (++historyTag_ == UINT32_MAX) historyTag_ = 1;
+    }
     temporalState_.beginFrame();
     gpu::GpuTimers* t = timers_.get();
     FrameStats stats;
@@ -456,6 +473,9 @@ FrameStats Renderer::renderFrame() {
         });
     }
     if (converge) convergedBounces_ = stats.bounces;
+    lastHistoryTag_ = blend ? historyTag_ : 0;
+    if (blend && historyHold_ > 0) --historyHold_;
+    if (converge) historyHold_ = 0;  // the light has settled: nothing to hold back
     staticDirty_ = false;
     haveHistory_ = voxelizer_ != nullptr;
     for (const gpu::TimerResult& r : timers_->results()) {
@@ -504,6 +524,7 @@ bool Renderer::growVoxelSlots() {
     bounceStats_.reset();
     staticDirty_ = true;
     haveHistory_ = false;
+    dropVoxelHistory(1);
     return true;
 }
 
@@ -540,6 +561,7 @@ bool Renderer::applySettings(const RenderSettings& s) {
         uploadLights();
         updateFrameConstants();
         haveHistory_ = false;
+        dropVoxelHistory(lightSettleFrames());
     }
     return true;
 }

@@ -174,7 +174,12 @@ private:
     void injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::VoxelVolumes& v, const vxgi::ClipTrace* trace,
-                           bool withStats);
+                           bool withStats, bool blend = false);
+    bool blendsVoxelRadiance() const;  // this frame blends the bounced radiance with last frame's
+    void prepareVoxelHistory();        // per-level history images, zeroed when (re)created
+    // Blends nothing for `frames` blending frames (the light settling after a
+    // change), and never with what was written before.
+    void dropVoxelHistory(uint32_t frames);
     std::optional<vxgi::ClipTrace> bounceTrace() const;
     // Clipmap (renderer_clipmap.cpp): levels, windows, scrolls.
     void createClipmap();
@@ -260,6 +265,12 @@ private:
     bool staticDirty_ = true;
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
+    // --voxel-temporal-alpha: per level, the light each slot reflected after
+    // the last blending frame (vxgi::VoxelHistory); frame tags count up from
+    // 1, lastHistoryTag_ is 0 when nothing may be blended with, and
+    // historyHold_ blending frames pass without blending after a change.
+    std::vector<gpu::Image> voxelHistory_;
+    uint32_t historyTag_ = 0, lastHistoryTag_ = 0, historyHold_ = 0;
     std::unique_ptr<gpu::Buffer> listHeader_;  // host-visible copy of the list header after voxelization
     std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(slots) floats
     std::unique_ptr<gpu::GpuTimers> timers_;

@@ -1,5 +1,7 @@
 #include "vxgi/bounce.h"
 
+#include <algorithm>
+#include <bit>
 #include <cstddef>
 
 #include "gpu/context.h"
@@ -26,6 +28,16 @@ const uint32_t kBounceClipmap[] = {
 
 }  // namespace
 
+gpu::ImageDesc historyImageDesc(uint32_t slots) {
+    gpu::ImageDesc d;
+    d.type = VK_IMAGE_TYPE_3D;
+    d.format = VK_FORMAT_R32G32B32A32_UINT;
+    d.extent = {sh::VOXEL_SLOT_ROW, std::max(slots / sh::VOXEL_SLOT_ROW, 1u), 1};
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    d.name = "voxel radiance history";
+    return d;
+}
+
 BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
@@ -35,7 +47,8 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
                        {sh::BIND_BOUNCE_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                       {sh::BIND_BOUNCE_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                       {sh::BIND_BOUNCE_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_BOUNCE_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
@@ -44,13 +57,16 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
         clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
     }
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
+    gpu::ImageDesc d = historyImageDesc(0);
+    d.name = "voxel radiance history (unused)";
+    noHistory_ = gpu::Image(ctx, d);
 }
 
 uint32_t BouncePass::statsFloats(uint32_t slots) { return voxelListMaxGroups(slots) * sh::BOUNCE_STATS_FLOATS; }
 
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
                         const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers,
-                        const ClipTrace* clip, uint32_t level) const {
+                        const ClipTrace* clip, uint32_t level, const VoxelHistory* history) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
     tracker.image(v.directional, gpu::use::ComputeRead);
@@ -58,6 +74,8 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     // Read and written: the statistics compare each voxel with its value before.
     tracker.image(v.radiance, gpu::use::ComputeReadWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeRead);
+    const gpu::Image& historyImage = history ? *history->image : noHistory_;
+    tracker.image(historyImage, gpu::use::ComputeReadWrite);
     if (stats) {
         // Only the dispatched groups write their slots: zero them all first.
         tracker.buffer(*stats, gpu::use::BufferTransferWrite).flush(cmd);
@@ -82,8 +100,13 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageImage(sh::BIND_BOUNCE_OUT, v.radiance.view())
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
+        .storageImage(sh::BIND_BOUNCE_HISTORY, historyImage.view())
         .push(ctx_, cmd, pipeline);
-    const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid), glm::uvec4(stats ? 1u : 0u, level, 0u, 0u)};
+    const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
+                                                  std::bit_cast<uint32_t>(history->alpha), 0u)
+                                     : glm::uvec4(0u);
+    const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid), glm::uvec4(stats ? 1u : 0u, level, 0u, 0u),
+                              blend};
     gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
     if (stats) tracker.buffer(*stats, gpu::use::HostRead).flush(cmd);

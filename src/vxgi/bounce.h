@@ -18,6 +18,17 @@ namespace dvsgi::vxgi {
 class VoxelVolumes;
 struct ClipTrace;
 
+// Temporal blending of the bounced radiance over feedback frames
+// (BIND_BOUNCE_HISTORY in shared/bounce_pass.h): one RGBA32UI texel per slot
+// of the bounced volumes (historyImageDesc).
+struct VoxelHistory {
+    const gpu::Image* image = nullptr;
+    uint32_t tag = 0;          // this frame's, never 0
+    uint32_t previousTag = 0;  // what a slot's history must carry to be blended with
+    float alpha = 1.0f;        // weight of this frame's value
+};
+gpu::ImageDesc historyImageDesc(uint32_t slots);
+
 class BouncePass {
 public:
     // clipmap: also the pipeline that traces clipmap levels (compiled only when asked for).
@@ -29,15 +40,17 @@ public:
     // With `clip`, `volumes` is clipmap level `level` and its cones trace the
     // levels from it up (clip's ConeLevels and volumes: the previous frame's
     // windows when the bounce feeds back); its directional volumes are read.
+    // With `history`, each voxel's new radiance is blended with its last one.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, VkSampler volumeSampler,
                 const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers,
-                const ClipTrace* clip = nullptr, uint32_t level = 0) const;
+                const ClipTrace* clip = nullptr, uint32_t level = 0, const VoxelHistory* history = nullptr) const;
     static uint32_t statsFloats(uint32_t slots);
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_, clipPipeline_;
-    gpu::Buffer noStats_;  // bound when no statistics are asked for (the binding must stay valid)
+    gpu::Buffer noStats_;     // bound when no statistics are asked for (the binding must stay valid)
+    gpu::Image noHistory_;    // bound when nothing is blended
 };
 
 }  // namespace dvsgi::vxgi

@@ -38,6 +38,11 @@ struct VoxelLightSettings {
     // (bounceCones()): beta = 1 costs half of 0.5 and changes the converged
     // indirect light by 1.8 % (docs/quality.md).
     float bounceStepFactor = 1.0f;
+    // Feedback frames: weight of this frame's bounced radiance against what
+    // the same voxel had after last frame's (1 = no blending). Dropped, so
+    // the new value is taken as it is, when lights, static geometry or
+    // settings change and for voxels that were not there last frame.
+    float temporalAlpha = 1.0f;
 };
 
 }  // namespace dvsgi::vxgi

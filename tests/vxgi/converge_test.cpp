@@ -8,6 +8,7 @@
 // renders the same frame.
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <utility>
 
 #include "gpu_fixture.h"
@@ -249,7 +250,11 @@ TEST_F(Converge, OpenBoxLetsLightEscapeAsRadiosityDoes) {
     EXPECT_NEAR(gotC / wantC, 1.0, 0.032);
 }
 
-TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
+// With --voxel-temporal-alpha too: a change of lights drops the blend's
+// history, so the light goes as fast as without it.
+class SwitchedOff : public GpuTest, public ::testing::WithParamInterface<float> {};
+
+TEST_P(SwitchedOff, LightLeavesNoIndirectLightUnderFeedback) {
     constexpr float kRho = 0.5f;
     scene::Scene s = emissiveBox(kRho, 0.0f);
     scene::Light light;
@@ -259,9 +264,13 @@ TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
     addLight(s, light, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, -1, 0));
     render::RenderSettings rs = boxSettings();
     rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
+    rs.voxelLight.temporalAlpha = GetParam();
     render::Renderer r(context(), s, rs);
-    // Feedback: frame k holds k - 1 bounces; 20 frames are converged for rho = 0.5.
-    for (int f = 0; f < 20; ++f) r.renderFrame();
+    // Feedback: frame k holds k - 1 bounces; 20 frames are converged for
+    // rho = 0.5 (blended with alpha 0.25, a frame keeps about 0.875 of what
+    // is missing: 60 frames).
+    const int settle = GetParam() < 1.0f ? 60 : 20;
+    for (int f = 0; f < settle; ++f) r.renderFrame();
     const double lit = wallMean(readRgba16(r.volumes()->radiance));
     const double indirect = lit - wallMean(readDirect(*r.volumes()));
     ASSERT_GT(indirect, 0.05 * lit);
@@ -281,6 +290,11 @@ TEST_F(Converge, SwitchedOffLightLeavesNoIndirectLightUnderFeedback) {
                 left);
     EXPECT_LT(left, 0.01 * indirect) << "after " << kFrames << " frames";
 }
+
+INSTANTIATE_TEST_SUITE_P(Converge, SwitchedOff, ::testing::Values(1.0f, 0.25f),
+                         [](const ::testing::TestParamInfo<float>& i) {
+                             return std::string(i.param < 1.0f ? "Blended" : "Plain");
+                         });
 
 // Under feedback a moved object's light must not linger where it was: a small
 // dynamic emitter lights the open box from its -x side, then moves to the +x
@@ -332,6 +346,85 @@ TEST_F(Converge, MovedObjectLeavesNoLastingGlowUnderFeedback) {
     std::printf("  floor under the old place: %.4f above the reference with the emitter there; %+.2e after %d "
                 "frame(s) with it moved\n",
                 glow, left, frames);
+    EXPECT_LT(std::abs(left), 0.01 * glow) << "after " << kFrames << " frames";
+}
+
+// --voxel-temporal-alpha a: a feedback frame moves the light each voxel
+// reflects only a fraction a of the way to its new value. Two renderers of the
+// open box with the dynamic emitter, one blending, converge to the same light;
+// the emitter is gathered by the cones (--emitters cones), since a moved area
+// light is a change of lights, which holds the blending back. After the
+// emitter moves, the floor (all of its light reflected) sees it in the second
+// frame, whose bounce reads the first one's volumes; there the blending one's
+// floor changes by a times the other's, and the glow where the emitter was
+// still goes, more slowly: a frame keeps about 1 - a (1 - t) of it, t what a
+// bounce returns.
+TEST_F(Converge, VoxelTemporalBlendMovesAFractionOfTheWay) {
+    constexpr float kAlpha = 0.25f;
+    auto scene = [] {
+        scene::Scene s = emissiveBox(0.5f, 0.0f, true);
+        const glm::quat down = glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0));
+        const int lamp = addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(20.0f)), glm::vec3(-0.4f, -0.2f, 0.0f),
+                                 0.1f, down);
+        s.nodes[size_t(lamp)].dynamic = true;
+        return std::pair{s, lamp};
+    };
+    render::RenderSettings rs = boxSettings();
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
+    rs.emitterLights = false;
+    const auto [s, lamp] = scene();
+    render::Renderer plain(context(), s, rs);
+    rs.voxelLight.temporalAlpha = kAlpha;
+    render::Renderer blended(context(), s, rs);
+    for (int f = 0; f < 20; ++f) plain.renderFrame();
+    for (int f = 0; f < 80; ++f) blended.renderFrame();
+    // The floor's inner voxels on the -x side, where the emitter is.
+    auto floorMean = [](const Rgba16Volume& v) {
+        double sum = 0.0;
+        int count = 0;
+        for (int x = kInnerLo; x < 16; ++x)
+            for (int z = kInnerLo; z <= kInnerHi; ++z) {
+                sum += v.at(x, kLow, z).r;
+                ++count;
+            }
+        return sum / count;
+    };
+    const double plain0 = floorMean(readRgba16(plain.volumes()->radiance));
+    const double blended0 = floorMean(readRgba16(blended.volumes()->radiance));
+    std::printf("  floor under the emitter, converged: %.5f plain, %.5f blended\n", plain0, blended0);
+    EXPECT_NEAR(blended0 / plain0, 1.0, 0.005);
+
+    for (render::Renderer* r : {&plain, &blended}) {
+        r->scene().nodes[size_t(lamp)].translation.x = 0.4f;
+        r->sceneChanged();
+        r->renderFrame();
+    }
+    // Nothing on the floor moves yet (the bounce gathered last frame's light).
+    EXPECT_EQ(floorMean(readRgba16(plain.volumes()->radiance)), plain0);
+    EXPECT_EQ(floorMean(readRgba16(blended.volumes()->radiance)), blended0);
+    plain.renderFrame();
+    blended.renderFrame();
+    const double plain1 = floorMean(readRgba16(plain.volumes()->radiance));
+    const double blended1 = floorMean(readRgba16(blended.volumes()->radiance));
+    const double fraction = (blended1 - blended0) / (plain1 - plain0);
+    std::printf("  after the move: plain %.5f, blended %.5f: %.3f of the plain change (alpha %.2f)\n", plain1,
+                blended1, fraction, kAlpha);
+    EXPECT_NEAR(fraction, kAlpha, 0.01);
+
+    // The glow left where the emitter was, against what the plain renderer
+    // settles to with the emitter in its new place.
+    for (int f = 0; f < 20; ++f) plain.renderFrame();
+    const double settled = floorMean(readRgba16(plain.volumes()->radiance));
+    const double glow = blended1 - settled;
+    constexpr int kFrames = 36;  // measured on lavapipe: 25 (1 - a (1 - t) = 0.84 a frame)
+    int frames = 2;
+    double left = glow;
+    while (frames < kFrames && std::abs(left) >= 0.01 * glow) {
+        blended.renderFrame();
+        ++frames;
+        left = floorMean(readRgba16(blended.volumes()->radiance)) - settled;
+    }
+    std::printf("  glow %.4f after the second frame; %+.2e after %d frame(s)\n", glow, left, frames);
     EXPECT_LT(std::abs(left), 0.01 * glow) << "after " << kFrames << " frames";
 }
 

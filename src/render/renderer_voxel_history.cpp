@@ -1,0 +1,44 @@
+// --voxel-temporal-alpha: the per-level history the voxel bounce blends the
+// voxels' reflected light with (vxgi::VoxelHistory), and when it may be used.
+#include "render/renderer.h"
+
+#include <algorithm>
+
+#include "gpu/barriers.h"
+#include "gpu/context.h"
+#include "gpu/tracker.h"
+#include "vxgi/bounce.h"
+#include "vxgi/volumes.h"
+
+namespace dvsgi::render {
+
+void Renderer::dropVoxelHistory(uint32_t frames) {
+    lastHistoryTag_ = 0;
+    historyHold_ = std::max(historyHold_, frames);
+}
+
+bool Renderer::blendsVoxelRadiance() const {
+    return voxelizer_ && !pv_ && feedbackFrame() && settings_.voxelLight.temporalAlpha < 1.0f;
+}
+
+void Renderer::prepareVoxelHistory() {
+    const size_t levels = levelVolumes().size();
+    voxelHistory_.resize(levels);
+    for (size_t l = 0; l < levels; ++l) {
+        const gpu::ImageDesc d = vxgi::historyImageDesc(level(l).slots);
+        gpu::Image& img = voxelHistory_[l];
+        if (img.handle() && img.desc().extent.height == d.extent.height) continue;
+        img = gpu::Image(ctx_, d);
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+            gpu::transition(cmd, img, gpu::use::Undefined, gpu::use::TransferDst);
+            const VkClearColorValue zero{};
+            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+            vkCmdClearColorImage(cmd, img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+            gpu::transition(cmd, img, gpu::use::TransferDst, gpu::use::ComputeReadWrite);
+        });
+        tracker_.assume(img, gpu::use::ComputeReadWrite);
+        dropVoxelHistory(0);
+    }
+}
+
+}  // namespace dvsgi::render
