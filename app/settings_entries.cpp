@@ -343,10 +343,11 @@ std::vector<Setting> imageAndVoxels() {
                     0.05, 4, FIELD(settings.voxelLight.bounceStepFactor)),
              "0.5", "a step factor beta in 0.05..4"),
         with(number({"voxel-temporal-alpha", kVoxelLight, "A", "",
-                     "feedback frames (--frames, dvsgi view): each voxel's bounced radiance moves only a fraction A "
-                     "of the way from what it had last frame, smoothing light that changes between frames (a moving "
-                     "object, a clipmap scroll); voxels new this frame, and every voxel after a change of lights, "
-                     "static geometry or settings, take the new value. 1 = no blending",
+                     "feedback frames (--frames, dvsgi view): the light each voxel reflects moves only a fraction A "
+                     "of the way from what it reflected last frame, smoothing the indirect light around a moving "
+                     "object (direct light is never delayed); voxels new this frame take the new value, and no "
+                     "voxel blends while the light settles after a change of lights, static geometry or settings. "
+                     "1 = no blending",
                      kAll, kFrame},
                     0.01, 1, FIELD(settings.voxelLight.temporalAlpha)),
              "0.5", "a weight in 0.01..1"),

@@ -3,9 +3,9 @@
 # glTF scene at 128^3, 256^3 and 512^3: every triangle whose projected
 # footprint along its dominant axis spans more than the threshold (voxel
 # columns: VOXC_WALK_COLUMNS_GPU 32, VOXC_WALK_COLUMNS_CPU 256) gets
-# ceil(w/8) * ceil(h/8) tiles (one column per lane, as on GPUs). The grid is approximated as the bounds plus
+# ceil(w/(8 L)) * ceil(h/8) tiles, L the columns per tile lane (1 on GPUs, 8 on CPU devices). The grid is approximated as the bounds plus
 # fitGrid's margin; meshes with translation/scale only.
-# Usage: scripts/compute-tiles.py SCENE.gltf [THRESHOLD=32]
+# Usage: scripts/compute-tiles.py SCENE.gltf [THRESHOLD=32] [LANE_COLUMNS=1]
 import json
 import os
 import sys
@@ -14,6 +14,7 @@ import numpy as np
 
 path = sys.argv[1]
 threshold = int(sys.argv[2]) if len(sys.argv) > 2 else 32
+lane = int(sys.argv[3]) if len(sys.argv) > 3 else 1
 g = json.load(open(path)); base = os.path.dirname(path)
 buf = open(os.path.join(base, g['buffers'][0]['uri']), 'rb').read()
 def acc(i, comps):
@@ -47,5 +48,5 @@ for N in (128, 256, 512):
     su = np.take_along_axis(span, uv, 1)
     cols = su[:, 0] * su[:, 1]
     big = cols > threshold
-    tiles = (np.ceil(su[:, 0] / 8) * np.ceil(su[:, 1] / 8))[big].sum()
+    tiles = (np.ceil(su[:, 0] / (8 * lane)) * np.ceil(su[:, 1] / 8))[big].sum()
     print(N, 'triangles', len(T), 'tiled', big.sum(), 'tiles', int(tiles), 'largest', int(cols.max()))

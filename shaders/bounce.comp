@@ -43,15 +43,18 @@ shared vec2 partial[GROUP_SIZE];
 // Feedback frames (--voxel-temporal-alpha): the reflected (bounced) light
 // moves a fraction alpha of the way from what the same voxel reflected after
 // last frame's bounce, so indirect light that changes from frame to frame (a
-// moving object, a clipmap scroll's new neighbours) changes smoothly; direct
-// light and emission are never delayed. A slot that held another voxel last
-// frame, or was not bounced then, or any slot while the host holds the
-// history back (after a change of lights, static geometry or settings), takes
-// the new value as it is.
-vec3 blendWithHistory(uint slot, vec3 value) {
+// moving object's surroundings) changes smoothly; direct light and emission
+// are never delayed. The history is kept per slot with the world voxel it
+// belongs to (grid voxel + the grid's corner in whole voxels, modulo 1024 per
+// axis: the same across a clipmap scroll, unlike the toroidal list entry), so
+// a slot that held another voxel last frame, or was not bounced then, or any
+// slot while the host holds the history back (after a change of lights,
+// static geometry or settings), takes the new value as it is.
+vec3 blendWithHistory(ivec3 v, uint slot, vec3 value) {
+    ivec3 corner = ivec3(round(grid.originSize.xyz / grid.originSize.w));
+    uint key = packVoxel((v + corner) & ivec3((1 << VOXEL_LIST_COORD_BITS) - 1));
     ivec3 texel = slotTexel(slot, 0u);
     uvec4 h = imageLoad(history, texel);
-    uint key = list.entries[slot];
     if (h.z == key && h.w == pc.blend.y) {
         vec3 before = vec3(unpackHalf2x16(h.x), unpackHalf2x16(h.y).x);
         value = before + uintBitsToFloat(pc.blend.z) * (value - before);
@@ -77,7 +80,7 @@ vec4 bounced(ivec3 v, uint slot) {
     float occlusion;
     vec3 E = gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
     vec3 reflected = voxelAlbedo(slot) / PI * E;
-    if (pc.blend.x != 0u) reflected = blendWithHistory(slot, reflected);
+    if (pc.blend.x != 0u) reflected = blendWithHistory(v, slot, reflected);
     return vec4(d.rgb + reflected, d.a);
 }
 

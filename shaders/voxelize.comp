@@ -190,7 +190,7 @@ void columnLayers(ivec2 column, out int first, out int last) {
 
 // Every candidate voxel of the columns from..to (inclusive, projected order),
 // row by row, walked by one invocation. The walk stores its hits and samples
-// them VOXC_PENDING at a time in a loop of their own: llvmpipe runs an if's
+// them pc.tiling.z at a time in a loop of their own: llvmpipe runs an if's
 // body for every lane batch under a mask, so a sample taken inside the walk
 // cost every candidate of every lane its texture fetches and atomics
 // (docs/benchmarks.md).
@@ -203,7 +203,7 @@ void walkColumns(ivec2 from, ivec2 to) {
     bool done = false;
     while (!done) {
         uint count = 0u;
-        while (!done && count < VOXC_PENDING) {
+        while (!done && count < pc.tiling.z) {
             if (layer <= last) {
                 ivec3 voxel = unproject(ivec3(column, layer), t.axis);
                 if (triangleTouchesVoxel(t.v[0], t.v[1], t.v[2], t.e[0], t.e[1], t.e[2], t.n, voxel))

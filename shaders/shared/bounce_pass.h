@@ -33,8 +33,9 @@ DVSGI_CONST(uint, BIND_BOUNCE_STATS, 6);      // float[BOUNCE_STATS_FLOATS] per 
 DVSGI_CONST(uint, BIND_BOUNCE_LIST, 7);       // occupied-voxel list: one invocation per entry
 DVSGI_CONST(uint, BIND_BOUNCE_GRID, 8);       // clipmap: the bounced level's own grid (BIND_CONE_GRID holds all levels)
 // Per slot (slotTexel(slot, 0)), RGBA32UI: the light the slot's voxel
-// reflected after last frame's bounce (x = rg, y = b, as half floats), z the list entry
-// (packed voxel) it belonged to, w the frame tag it was written with.
+// reflected after last frame's bounce (x = rg, y = b, as half floats), z the
+// world voxel it belonged to (packed, modulo 1024 per axis), w the frame tag
+// it was written with.
 DVSGI_CONST(uint, BIND_BOUNCE_HISTORY, 9);
 
 DVSGI_END

@@ -7,8 +7,8 @@
 
 DVSGI_BEGIN
 
-// One invocation per triangle in the triangle phase, one per voxel column of
-// a tile in the tile phase: both use groups of VOXC_GROUP = VOXC_TILE^2.
+// One invocation per triangle in the triangle phase, one per run of columns of
+// a tile's row in the tile phase: both use groups of VOXC_GROUP = VOXC_TILE^2.
 DVSGI_CONST(uint, VOXC_GROUP, 64);
 DVSGI_CONST(uint, VOXC_TILE, 8);
 // A triangle whose (grid-clipped) footprint along its dominant axis spans more
@@ -21,21 +21,35 @@ DVSGI_CONST(uint, VOXC_TILE, 8);
 // the triangle) and little for divergence: longer walks, eight columns per
 // lane. Measured on lavapipe, Sponza 256^3: 32 walk columns took 1.4-1.6x as
 // long as 256, one column per lane 1.2x as long as eight, and the Cornell box
-// 2.3x (docs/benchmarks.md, "The compute voxelizer on a CPU device").
+// at 128^3 2.3x (docs/benchmarks.md, "The compute voxelizer on a CPU device"
+// and "Deferred samples and longer tile lanes on CPU devices").
 DVSGI_CONST(uint, VOXC_WALK_COLUMNS_GPU, 32);
 DVSGI_CONST(uint, VOXC_LANE_COLUMNS_GPU, 1);
 DVSGI_CONST(uint, VOXC_WALK_COLUMNS_CPU, 256);
 DVSGI_CONST(uint, VOXC_LANE_COLUMNS_CPU, 8);
 // llvmpipe ends every loop of an invocation once its loops together have
 // looped 65535 times (test LavapipeLimits.LoopsShareOneIterationBudget): the
-// rest of a walk would be dropped without an error. A walk loops about once
-// per candidate (at most three a column) and, per hit, about a dozen times in
-// the sample's texture loops; the CPU walk stays far under the budget.
+// rest of a walk would be dropped without an error. A walk loops once per
+// candidate (at most four a column: the plane spans two layers over a column,
+// plus the rounding margin) and, per hit, about a dozen times in the sample's
+// loops (textures, taps, the voxel claim); the CPU tiling stays far under the
+// budget (static_assert in vxgi/voxelize_compute.cpp). Two walks are not
+// bounded by it: a degenerate triangle's, which tries every layer of its box,
+// and the walk of a triangle whose tiles no longer fit the queue; on llvmpipe
+// either could lose voxels on a large grid.
 DVSGI_CONST(uint, LLVMPIPE_LOOP_BUDGET, 65535);
-DVSGI_CONST(uint, VOXC_WALK_LOOPS_PER_COLUMN, 3 + 3 * 12);
-// Hits one invocation's walk collects before it samples them (voxelize.comp,
-// voxelizeColumns).
+DVSGI_CONST(uint, VOXC_CANDIDATES_PER_COLUMN, 4);
+DVSGI_CONST(uint, VOXC_LOOPS_PER_SAMPLE, 12);
+DVSGI_CONST(uint, VOXC_WALK_LOOPS_PER_COLUMN, VOXC_CANDIDATES_PER_COLUMN * (1 + VOXC_LOOPS_PER_SAMPLE));
+// Hits a walk collects before it samples them (voxelize.comp, walkColumns):
+// on llvmpipe, which runs an if's body under a mask for every candidate, up
+// to VOXC_PENDING; on GPUs one, sampled as soon as it is found, as measured
+// on the H200 before (a private array indexed per lane would live in memory
+// there). The push constant's tiling.z picks it.
 DVSGI_CONST(uint, VOXC_PENDING, 32);
+DVSGI_CONST(uint, VOXC_PENDING_GPU, 1);
+// Most columns one tile invocation may walk (ComputeTiling::laneColumns).
+DVSGI_CONST(uint, VOXC_MAX_LANE_COLUMNS, 64);
 // Tile work items one triangle phase can queue (16 MiB of VoxcTile). A
 // triangle whose tiles no longer fit is walked by its own invocation: slower,
 // same result. 65535 (the old bound, one dispatch row) overflowed on Sponza at
@@ -72,7 +86,8 @@ struct VoxelizeComputePush {
                      // y = 4 (bilinear taps), z = 2 (textures per material): loop counts the shader
                      // compiler must not see, so each texture fetch stays one site (lib/material.glsl)
     uvec4 tiling;    // x the most columns a triangle walks alone (VOXC_WALK_COLUMNS_*),
-                     // y columns per invocation in a tile (VOXC_LANE_COLUMNS_*)
+                     // y columns per invocation in a tile (VOXC_LANE_COLUMNS_*),
+                     // z hits a walk collects before sampling them (1..VOXC_PENDING)
 };
 DVSGI_CHECK_SIZE(VoxelizeComputePush, 48);
 

@@ -173,7 +173,7 @@ void Renderer::uploadLights() {
     if (!std::equal(records, records + lightBytes, lightRecords_.begin(), lightRecords_.end())) {
         lightRecords_.assign(records, records + lightBytes);
         temporalState_.drop(lightSettleFrames());
-        dropVoxelHistory(lightSettleFrames());
+        dropVoxelHistory();
     }
     const VkDeviceSize viewBytes = setup.views.size() * sizeof(sh::GpuShadowView);
     shadowViews_ = setup.views;
@@ -411,7 +411,7 @@ FrameStats Renderer::renderFrame() {
     timers_->reset();
     if (staticDirty_) {
         temporalState_.drop(lightSettleFrames());
-        dropVoxelHistory(lightSettleFrames());
+        dropVoxelHistory();
     }
     const bool blend = blendsVoxelRadiance();
     if (blend) {
@@ -524,7 +524,7 @@ bool Renderer::growVoxelSlots() {
     bounceStats_.reset();
     staticDirty_ = true;
     haveHistory_ = false;
-    dropVoxelHistory(1);
+    dropVoxelHistory();
     return true;
 }
 
@@ -555,13 +555,14 @@ bool Renderer::applySettings(const RenderSettings& s) {
                        s.lightOcclusion != settings_.lightOcclusion;
     settings_ = s;
     temporalState_.reset();  // the accumulated term belongs to the old settings
+    if (s.voxelLight.temporalAlpha >= 1.0f) voxelHistory_.clear();
     const uint32_t scopes = timerScopes(s);
     if (scopes > timers_->capacity()) timers_ = std::make_unique<gpu::GpuTimers>(ctx_, scopes);
     if (light) {
         uploadLights();
         updateFrameConstants();
         haveHistory_ = false;
-        dropVoxelHistory(lightSettleFrames());
+        dropVoxelHistory();
     }
     return true;
 }

@@ -177,9 +177,9 @@ private:
                            bool withStats, bool blend = false);
     bool blendsVoxelRadiance() const;  // this frame blends the bounced radiance with last frame's
     void prepareVoxelHistory();        // per-level history images, zeroed when (re)created
-    // Blends nothing for `frames` blending frames (the light settling after a
-    // change), and never with what was written before.
-    void dropVoxelHistory(uint32_t frames);
+    // Blends with nothing written before, and with nothing at all while the
+    // light settles after a change.
+    void dropVoxelHistory();
     std::optional<vxgi::ClipTrace> bounceTrace() const;
     // Clipmap (renderer_clipmap.cpp): levels, windows, scrolls.
     void createClipmap();

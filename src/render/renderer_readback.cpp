@@ -62,6 +62,9 @@ std::vector<MemoryItem> Renderer::memory() const {
                                  " radiance and directional (shared)",
                              scratch->bytes()});
         if (atlases_) items.push_back({"clipmap atlases (radiance, directional)", atlases_->bytes()});
+        uint64_t history = 0;
+        for (const gpu::Image& img : voxelHistory_) history += img.memorySize();
+        if (history) items.push_back({"voxel radiance history (--voxel-temporal-alpha)", history});
         if (pv_) items.push_back({"pv last frame's attributes and list", pv_->memoryBytes()});
         uint64_t rsm = 0, around = 0;
         for (const PvView& v : rsm_) rsm += v.gbuffer.memoryBytes();

@@ -12,9 +12,18 @@
 
 namespace dvsgi::render {
 
-void Renderer::dropVoxelHistory(uint32_t frames) {
+// After a change the light settles over about as many feedback frames as
+// converging took bounces (all of --max-bounces before any frame converged);
+// what is left after that is still a few per cent of the indirect light, so
+// the blend waits twice as long, and the stale light goes as fast as without
+// it (test Converge/SwitchedOff.*/Blended). Fixed frames add no feedback.
+void Renderer::dropVoxelHistory() {
+    const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
+    const uint32_t settle = vl.bounceMode == vxgi::BounceMode::Fixed ? 1u
+                            : convergedBounces_                   ? 2 * convergedBounces_
+                                                                  : vl.maxBounces;
     lastHistoryTag_ = 0;
-    historyHold_ = std::max(historyHold_, frames);
+    historyHold_ = std::max(historyHold_, settle);
 }
 
 bool Renderer::blendsVoxelRadiance() const {
@@ -37,7 +46,7 @@ void Renderer::prepareVoxelHistory() {
             gpu::transition(cmd, img, gpu::use::TransferDst, gpu::use::ComputeReadWrite);
         });
         tracker_.assume(img, gpu::use::ComputeReadWrite);
-        dropVoxelHistory(0);
+        lastHistoryTag_ = 0;  // nothing written yet
     }
 }
 

@@ -8,7 +8,6 @@
 #include <memory>
 
 #include "gpu/pipeline.h"
-#include "vxgi/voxelize_compute.h"
 
 namespace dvsgi::gpu {
 class GpuTimers;
@@ -21,6 +20,7 @@ class SceneGpu;
 namespace dvsgi::vxgi {
 
 class ComputeVoxelizer;
+struct ComputeTiling;
 class VoxelVolumes;
 
 enum class VoxelizeMode { Static, Dynamic };

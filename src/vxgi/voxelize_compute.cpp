@@ -45,12 +45,18 @@ static_assert(uint64_t(sh::VOXC_WALK_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLU
 static_assert(uint64_t(sh::VOXC_LANE_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
 
 ComputeTiling computeTilingFor(VkPhysicalDeviceType type) {
-    if (type == VK_PHYSICAL_DEVICE_TYPE_CPU) return {sh::VOXC_WALK_COLUMNS_CPU, sh::VOXC_LANE_COLUMNS_CPU};
-    return {sh::VOXC_WALK_COLUMNS_GPU, sh::VOXC_LANE_COLUMNS_GPU};
+    if (type == VK_PHYSICAL_DEVICE_TYPE_CPU)
+        return {sh::VOXC_WALK_COLUMNS_CPU, sh::VOXC_LANE_COLUMNS_CPU, sh::VOXC_PENDING};
+    return {sh::VOXC_WALK_COLUMNS_GPU, sh::VOXC_LANE_COLUMNS_GPU, sh::VOXC_PENDING_GPU};
 }
 
 void ComputeVoxelizer::setTiling(ComputeTiling tiling) {
-    if (tiling.laneColumns == 0) throw std::invalid_argument("voxelizer: a tile invocation walks at least one column");
+    if (tiling.laneColumns == 0 || tiling.laneColumns > sh::VOXC_MAX_LANE_COLUMNS)
+        throw std::invalid_argument("voxelizer: a tile invocation walks 1.." +
+                                    std::to_string(sh::VOXC_MAX_LANE_COLUMNS) + " columns");
+    if (tiling.pending == 0 || tiling.pending > sh::VOXC_PENDING)
+        throw std::invalid_argument("voxelizer: a walk collects 1.." + std::to_string(sh::VOXC_PENDING) +
+                                    " hits before sampling them");
     tiling_ = tiling;
 }
 
@@ -137,7 +143,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     const uint32_t mode32 = dynamic ? sh::VOXELIZE_DYNAMIC : sh::VOXELIZE_STATIC;
     // Past maxComputeWorkGroupCount[0] (65535 at least) the groups wrap into y.
     const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
-    const glm::uvec4 tiling(tiling_.walkColumns, tiling_.laneColumns, 0, 0);
+    const glm::uvec4 tiling(tiling_.walkColumns, tiling_.laneColumns, tiling_.pending, 0);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
                                                glm::uvec4(row, 4, 2, 0), tiling});

@@ -23,9 +23,11 @@ enum class VoxelizeMode;
 // How the compute voxelizer splits large triangles (shared/voxelize_compute_pass.h).
 struct ComputeTiling {
     uint32_t walkColumns;  // the most voxel columns a triangle walks alone before it is split into tiles
-    uint32_t laneColumns;  // columns each invocation of a tile walks
+    uint32_t laneColumns;  // columns each invocation of a tile walks (1..VOXC_MAX_LANE_COLUMNS)
+    uint32_t pending;      // hits a walk collects before sampling them (1..VOXC_PENDING)
 };
-// The tiling measured best for the device type (CPU devices walk longer).
+// The tiling measured best for the device type (CPU devices walk longer and
+// sample their hits in batches).
 ComputeTiling computeTilingFor(VkPhysicalDeviceType type);
 
 class ComputeVoxelizer {

@@ -12,6 +12,7 @@
 #include "gpu/pipeline.h"
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
+#include "shared/voxelize_compute_pass.h"
 
 namespace dvsgi::test {
 namespace {
@@ -19,8 +20,6 @@ namespace {
 const uint32_t kLoops[] = {
 #include "shaders/loop_budget.comp.inc"
 };
-
-constexpr uint32_t kLlvmpipeLoopBudget = 65535;
 
 class LavapipeLimits : public GpuTest {};
 
@@ -56,8 +55,8 @@ TEST_F(LavapipeLimits, LoopsShareOneIterationBudget) {
     EXPECT_EQ(out[0], iterations);
     if (ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
         // The back edge that takes the budget to zero still runs its body.
-        EXPECT_GE(out[0] + out[1], kLlvmpipeLoopBudget - 2);
-        EXPECT_LE(out[0] + out[1], kLlvmpipeLoopBudget + 2);
+        EXPECT_GE(out[0] + out[1], shader::LLVMPIPE_LOOP_BUDGET - 2);
+        EXPECT_LE(out[0] + out[1], shader::LLVMPIPE_LOOP_BUDGET + 2);
     } else {
         EXPECT_EQ(out[1], iterations);
     }

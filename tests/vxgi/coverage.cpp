@@ -10,6 +10,7 @@
 
 #include "gpu_fixture.h"
 #include "shared/voxelize_compute_pass.h"
+#include "vxgi/voxelize_compute.h"
 
 namespace dvsgi::test {
 
@@ -85,10 +86,11 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
         const char* name;
     };
     const std::vector<Run> runs =
-        compute ? std::vector<Run>{{{0u, 1u}, " (all tiled, 1 column per lane)"},
-                                   {{0u, shader::VOXC_LANE_COLUMNS_CPU}, " (all tiled, several columns per lane)"},
-                                   {{UINT32_MAX, 1u}, " (none tiled)"}}
-                : std::vector<Run>{{{0u, 1u}, ""}};
+        compute ? std::vector<Run>{{{0u, 1u, 1u}, " (all tiled, 1 column per lane, hits sampled at once)"},
+                                   {{0u, shader::VOXC_LANE_COLUMNS_CPU, shader::VOXC_PENDING},
+                                    " (all tiled, several columns per lane, hits sampled in batches)"},
+                                   {{UINT32_MAX, 1u, shader::VOXC_PENDING}, " (none tiled)"}}
+                : std::vector<Run>{{{0u, 1u, 1u}, ""}};
     for (const Run& run : runs) {
         if (compute) voxelizer.setComputeTiling(run.tiling);
         for (size_t g = 0; g < grids.size(); ++g) {
