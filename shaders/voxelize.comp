@@ -239,6 +239,10 @@ bool reserveTiles(uint count, out uint slot) {
     return true;
 }
 
+// A tile: VOXC_TILE rows of VOXC_TILE invocations, each walking pc.tiling.y
+// consecutive columns of its row (columns x rows).
+ivec2 tileSize() { return ivec2(int(VOXC_TILE * pc.tiling.y), int(VOXC_TILE)); }
+
 void trianglePhase() {
     uint groupIndex = gl_WorkGroupID.y * pc.dispatch.x + gl_WorkGroupID.x;
     if (groupIndex >= pc.ids.y) return;
@@ -249,8 +253,7 @@ void trianglePhase() {
     if (!loadTriangle(g.draw.x, firstIndex, int(g.draw.z))) return;
     ivec2 span = t.hi.xy - t.lo.xy + 1;
     if (uint(span.x * span.y) > pc.tiling.x) {
-        uvec2 tileSize = uvec2(VOXC_TILE * pc.tiling.y, VOXC_TILE);
-        uvec2 tileSpan = (uvec2(span) + tileSize - 1u) / tileSize;
+        uvec2 tileSpan = uvec2((span + tileSize() - 1) / tileSize());
         uint count = tileSpan.x * tileSpan.y, slot;
         if (reserveTiles(count, slot)) {
             for (uint i = 0u; i < count; ++i) tiles[slot + i].item = uvec4(g.draw.x, firstIndex, g.draw.z, i);
@@ -265,13 +268,10 @@ void tilePhase() {
     if (tileIndex >= indirect[3]) return;  // the last row's tail
     uvec4 item = tiles[tileIndex].item;
     if (!loadTriangle(item.x, item.y, int(item.z))) return;
-    // A tile is VOXC_TILE rows of VOXC_TILE lanes, each lane pc.tiling.y
-    // consecutive columns of its row.
     int laneColumns = int(pc.tiling.y);
-    ivec2 tileSize = ivec2(int(VOXC_TILE) * laneColumns, int(VOXC_TILE));
-    int tilesPerRow = (t.hi.x - t.lo.x + tileSize.x) / tileSize.x;
+    int tilesPerRow = (t.hi.x - t.lo.x + tileSize().x) / tileSize().x;
     int tile = int(item.w), local = int(gl_LocalInvocationID.x);
-    ivec2 from = t.lo.xy + ivec2(tile % tilesPerRow, tile / tilesPerRow) * tileSize +
+    ivec2 from = t.lo.xy + ivec2(tile % tilesPerRow, tile / tilesPerRow) * tileSize() +
                  ivec2(local % int(VOXC_TILE) * laneColumns, local / int(VOXC_TILE));
     if (any(greaterThan(from, t.hi.xy))) return;
     walkColumns(from, ivec2(min(from.x + laneColumns - 1, t.hi.x), from.y));

@@ -9,6 +9,15 @@
 
 namespace dvsgi::gpu {
 
+void recordZeroNewImage(VkCommandBuffer cmd, const Image& image) {
+    transition(cmd, image, use::Undefined, use::TransferDst);
+    const VkClearColorValue zero{};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                        VK_REMAINING_ARRAY_LAYERS};
+    vkCmdClearColorImage(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+    transition(cmd, image, use::TransferDst, use::ComputeReadWrite);
+}
+
 uint32_t formatBytes(VkFormat format) {
     switch (format) {
         case VK_FORMAT_R8_UNORM: case VK_FORMAT_R8_UINT: return 1;

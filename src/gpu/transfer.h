@@ -29,6 +29,10 @@ std::vector<uint8_t> readbackImage(const Context& ctx, const Image& image, Image
 
 std::vector<uint8_t> readbackBuffer(const Context& ctx, const Buffer& buffer, VkDeviceSize bytes = VK_WHOLE_SIZE);
 
+// Zeroes every mip and layer of a newly created colour image (contents
+// undefined) and leaves it in use::ComputeReadWrite.
+void recordZeroNewImage(VkCommandBuffer cmd, const Image& image);
+
 uint32_t formatBytes(VkFormat format);
 
 }  // namespace dvsgi::gpu

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "gpu/barriers.h"
 #include "gpu/context.h"
 #include "gpu/tracker.h"
+#include "gpu/transfer.h"
 #include "vxgi/bounce.h"
 #include "vxgi/volumes.h"
 
@@ -38,13 +38,7 @@ void Renderer::prepareVoxelHistory() {
         gpu::Image& img = voxelHistory_[l];
         if (img.handle() && img.desc().extent.height == d.extent.height) continue;
         img = gpu::Image(ctx_, d);
-        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-            gpu::transition(cmd, img, gpu::use::Undefined, gpu::use::TransferDst);
-            const VkClearColorValue zero{};
-            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-            vkCmdClearColorImage(cmd, img.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-            gpu::transition(cmd, img, gpu::use::TransferDst, gpu::use::ComputeReadWrite);
-        });
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) { gpu::recordZeroNewImage(cmd, img); });
         tracker_.assume(img, gpu::use::ComputeReadWrite);
         lastHistoryTag_ = 0;  // nothing written yet
     }

@@ -165,15 +165,9 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
         gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                            VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
-        const VkClearColorValue zero{};
         // Shared dense volumes may hold another grid's data: their user clears them.
-        for (const gpu::Image* img : all()) {
-            if (!ownDense && (img == &radiance || img == &directional)) continue;
-            gpu::transition(cmd, *img, gpu::use::Undefined, gpu::use::TransferDst);
-            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
-            vkCmdClearColorImage(cmd, img->handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-            gpu::transition(cmd, *img, gpu::use::TransferDst, gpu::use::ComputeReadWrite);
-        }
+        for (const gpu::Image* img : all())
+            if (ownDense || (img != &radiance && img != &directional)) gpu::recordZeroNewImage(cmd, *img);
     });
 }
 

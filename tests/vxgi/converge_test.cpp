@@ -56,6 +56,29 @@ Rgba16Volume radianceAfterOneBounce(const scene::Scene& s) {
     return readRgba16(r.volumes()->radiance);
 }
 
+// The open box of albedo 0.5 with a small dynamic emitter facing the floor
+// at x = lampX (the node index of the emitter second).
+std::pair<scene::Scene, int> lampBox(float lampX) {
+    scene::Scene s = emissiveBox(0.5f, 0.0f, true);
+    const glm::quat down = glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0));
+    const int lamp =
+        addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(20.0f)), glm::vec3(lampX, -0.2f, 0.0f), 0.1f, down);
+    s.nodes[size_t(lamp)].dynamic = true;
+    return {s, lamp};
+}
+
+// Mean radiance of the floor's inner voxels on the -x side (under lampBox(-0.4)).
+double lampSideFloorMean(const Rgba16Volume& v) {
+    double sum = 0.0;
+    int count = 0;
+    for (int x = kInnerLo; x < 16; ++x)
+        for (int z = kInnerLo; z <= kInnerHi; ++z) {
+            sum += v.at(x, kLow, z).r;
+            ++count;
+        }
+    return sum / count;
+}
+
 class Converge : public GpuTest {};
 
 TEST_F(Converge, ClosedFurnaceReachesTheInfiniteSeriesOfItsTransport) {
@@ -302,35 +325,17 @@ INSTANTIATE_TEST_SUITE_P(Converge, SwitchedOff, ::testing::Values(1.0f, 0.25f),
 // half holds what a renderer that always had the emitter in its new place
 // converges to.
 TEST_F(Converge, MovedObjectLeavesNoLastingGlowUnderFeedback) {
-    auto scene = [](float lampX) {
-        scene::Scene s = emissiveBox(0.5f, 0.0f, true);
-        const glm::quat down = glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0));
-        const int lamp = addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(20.0f)), glm::vec3(lampX, -0.2f, 0.0f),
-                                 0.1f, down);
-        s.nodes[size_t(lamp)].dynamic = true;
-        return std::pair{s, lamp};
-    };
     render::RenderSettings rs = boxSettings();
     rs.voxelLight.bounceMode = vxgi::BounceMode::Feedback;
     constexpr int kSettle = 20;  // feedback frames to converge with rho = 0.5
-    const auto [moved, lamp] = scene(-0.4f);
+    const auto [moved, lamp] = lampBox(-0.4f);
     render::Renderer r(context(), moved, rs);
     for (int f = 0; f < kSettle; ++f) r.renderFrame();
-    render::Renderer ref(context(), scene(0.4f).first, rs);
+    render::Renderer ref(context(), lampBox(0.4f).first, rs);
     for (int f = 0; f < kSettle; ++f) ref.renderFrame();
-    const Rgba16Volume want = readRgba16(ref.volumes()->radiance);
-    // Mean radiance of the floor's inner voxels on the -x side, where the
-    // emitter was, in excess of the reference.
-    auto excess = [&](const Rgba16Volume& v) {
-        double sum = 0.0;
-        int count = 0;
-        for (int x = kInnerLo; x < 16; ++x)
-            for (int z = kInnerLo; z <= kInnerHi; ++z) {
-                sum += v.at(x, kLow, z).r - want.at(x, kLow, z).r;
-                ++count;
-            }
-        return sum / count;
-    };
+    const double want = lampSideFloorMean(readRgba16(ref.volumes()->radiance));
+    // Where the emitter was, in excess of the reference.
+    auto excess = [&](const Rgba16Volume& v) { return lampSideFloorMean(v) - want; };
     const double glow = excess(readRgba16(r.volumes()->radiance));
     ASSERT_GT(glow, 0.05);
     r.scene().nodes[size_t(lamp)].translation.x = 0.4f;
@@ -361,21 +366,13 @@ TEST_F(Converge, MovedObjectLeavesNoLastingGlowUnderFeedback) {
 // fraction of it the next bounce returns.
 TEST_F(Converge, VoxelTemporalBlendMovesAFractionOfTheWay) {
     constexpr float kAlpha = 0.25f;
-    auto scene = [] {
-        scene::Scene s = emissiveBox(0.5f, 0.0f, true);
-        const glm::quat down = glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0));
-        const int lamp = addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(20.0f)), glm::vec3(-0.4f, -0.2f, 0.0f),
-                                 0.1f, down);
-        s.nodes[size_t(lamp)].dynamic = true;
-        return std::pair{s, lamp};
-    };
     // The first frame converges; the blend starts with the second feedback frame.
     render::RenderSettings rs = boxSettings();
     rs.voxelLight.bounceMode = vxgi::BounceMode::Converge;
     rs.voxelLight.convergence = 0.002f;
     rs.voxelLight.maxBounces = 200;
     rs.emitterLights = false;
-    const auto [s, lamp] = scene();
+    const auto [s, lamp] = lampBox(-0.4f);
     render::Renderer plain(context(), s, rs);
     rs.voxelLight.temporalAlpha = kAlpha;
     render::Renderer blended(context(), s, rs);
@@ -383,19 +380,8 @@ TEST_F(Converge, VoxelTemporalBlendMovesAFractionOfTheWay) {
         plain.renderFrame();
         blended.renderFrame();
     }
-    // The floor's inner voxels on the -x side, where the emitter is.
-    auto floorMean = [](const Rgba16Volume& v) {
-        double sum = 0.0;
-        int count = 0;
-        for (int x = kInnerLo; x < 16; ++x)
-            for (int z = kInnerLo; z <= kInnerHi; ++z) {
-                sum += v.at(x, kLow, z).r;
-                ++count;
-            }
-        return sum / count;
-    };
-    const double plain0 = floorMean(readRgba16(plain.volumes()->radiance));
-    const double blended0 = floorMean(readRgba16(blended.volumes()->radiance));
+    const double plain0 = lampSideFloorMean(readRgba16(plain.volumes()->radiance));
+    const double blended0 = lampSideFloorMean(readRgba16(blended.volumes()->radiance));
     std::printf("  floor under the emitter, converged: %.5f plain, %.5f blended\n", plain0, blended0);
     EXPECT_NEAR(blended0 / plain0, 1.0, 0.005);
 
@@ -405,12 +391,12 @@ TEST_F(Converge, VoxelTemporalBlendMovesAFractionOfTheWay) {
         r->renderFrame();
     }
     // Nothing on the floor moves yet (the bounce gathered last frame's light).
-    EXPECT_NEAR(floorMean(readRgba16(plain.volumes()->radiance)), plain0, 1e-3 * plain0);
-    EXPECT_NEAR(floorMean(readRgba16(blended.volumes()->radiance)), blended0, 1e-3 * blended0);
+    EXPECT_NEAR(lampSideFloorMean(readRgba16(plain.volumes()->radiance)), plain0, 1e-3 * plain0);
+    EXPECT_NEAR(lampSideFloorMean(readRgba16(blended.volumes()->radiance)), blended0, 1e-3 * blended0);
     plain.renderFrame();
     blended.renderFrame();
-    const double plain1 = floorMean(readRgba16(plain.volumes()->radiance));
-    const double blended1 = floorMean(readRgba16(blended.volumes()->radiance));
+    const double plain1 = lampSideFloorMean(readRgba16(plain.volumes()->radiance));
+    const double blended1 = lampSideFloorMean(readRgba16(blended.volumes()->radiance));
     const double fraction = (blended1 - blended0) / (plain1 - plain0);
     std::printf("  after the move: plain %.5f, blended %.5f: %.3f of the plain change (alpha %.2f)\n", plain1,
                 blended1, fraction, kAlpha);
@@ -419,7 +405,7 @@ TEST_F(Converge, VoxelTemporalBlendMovesAFractionOfTheWay) {
     // The glow left where the emitter was, against what the plain renderer
     // settles to with the emitter in its new place.
     for (int f = 0; f < 20; ++f) plain.renderFrame();
-    const double settled = floorMean(readRgba16(plain.volumes()->radiance));
+    const double settled = lampSideFloorMean(readRgba16(plain.volumes()->radiance));
     const double glow = blended1 - settled;
     constexpr int kFrames = 36;  // measured on lavapipe: 25 (1 - a (1 - t) = 0.84 a frame)
     int frames = 2;
@@ -427,7 +413,7 @@ TEST_F(Converge, VoxelTemporalBlendMovesAFractionOfTheWay) {
     while (frames < kFrames && std::abs(left) >= 0.01 * glow) {
         blended.renderFrame();
         ++frames;
-        left = floorMean(readRgba16(blended.volumes()->radiance)) - settled;
+        left = lampSideFloorMean(readRgba16(blended.volumes()->radiance)) - settled;
     }
     std::printf("  glow %.4f after the second frame; %+.2e after %d frame(s)\n", glow, left, frames);
     EXPECT_LT(std::abs(left), 0.01 * glow) << "after " << kFrames << " frames";

@@ -91,10 +91,16 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
                                     " (all tiled, several columns per lane, hits sampled in batches)"},
                                    {{UINT32_MAX, 1u, shader::VOXC_PENDING}, " (none tiled)"}}
                 : std::vector<Run>{{{0u, 1u, 1u}, ""}};
-    for (const Run& run : runs) {
-        if (compute) voxelizer.setComputeTiling(run.tiling);
-        for (size_t g = 0; g < grids.size(); ++g) {
-            const vxgi::GridSpec& grid = grids[g];
+    for (size_t g = 0; g < grids.size(); ++g) {
+        const vxgi::GridSpec& grid = grids[g];
+        const std::vector<Triangle> tris = voxelTriangles(s, grid);
+        triangles = tris.size();
+        // The compute path's boxes are grown (shared/voxelize_compute_pass.h);
+        // its reference is grown alike and must match exactly.
+        const double growth = compute ? double(shader::VOXC_BOX_GROWTH) : 0.0;
+        const VoxelSet ref = referenceVoxelize(tris, grid.n, growth);
+        for (const Run& run : runs) {
+            if (compute) voxelizer.setComputeTiling(run.tiling);
             const std::string where = label + run.name + ": grid " + std::to_string(g);
             vxgi::VoxelVolumes volumes(context(), grid);
             gpu::Tracker tracker = volumeTracker(volumes);
@@ -103,12 +109,6 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
                 voxelizer.voxelize(cmd, tracker, sceneGpu, volumes, vxgi::VoxelizeMode::Static, nullptr);
             });
             const VoxelSet gpu = readVoxels(volumes).occupancy();
-            const std::vector<Triangle> tris = voxelTriangles(s, grid);
-            triangles = tris.size();
-            // The compute path's boxes are grown (shared/voxelize_compute_pass.h);
-            // its reference is grown alike and must match exactly.
-            const double growth = compute ? double(shader::VOXC_BOX_GROWTH) : 0.0;
-            const VoxelSet ref = referenceVoxelize(tris, grid.n, growth);
             const CoverageReport r = compareCoverage(ref, gpu);
             for (const glm::ivec3& v : r.missList) {
                 std::string culprits;
