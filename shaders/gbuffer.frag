@@ -20,7 +20,11 @@ layout(location = 2) out vec4 outEmission;  // rgb emitted radiance, a = 1 where
 void main() {
     GpuMaterial m = materials[inMaterial];
     vec4 base = materialBaseColor(m, inUV);
+#ifdef DVSGI_ALPHA_TESTED
+    // Only cut-out and stochastic materials use this variant: a shader that can
+    // discard keeps the depth test late, so opaque draws use the other one.
     if (!materialCovers(m, base.a, gl_FragCoord.xy)) discard;
+#endif
 
     float metallic = m.params.x, roughness = m.params.y;
     if (m.textures.z != NO_TEXTURE) {

@@ -18,6 +18,9 @@ const uint32_t kVert[] = {
 const uint32_t kFrag[] = {
 #include "shaders/gbuffer.frag.inc"
 };
+const uint32_t kFragAlphaTested[] = {
+#include "shaders/gbuffer_alpha_tested.frag.inc"
+};
 
 }  // namespace
 
@@ -25,7 +28,7 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(
     constexpr VkFormat kColorFormat = GBuffer::kColorFormat;
     gpu::GraphicsDesc g;
     g.vertex = kVert;
-    g.fragment = kFrag;
+    g.fragment = kFragAlphaTested;
     g.colorFormats = {kColorFormat, kColorFormat, kColorFormat};
     g.depthFormat = GBuffer::kDepthFormat;
     gpu::LayoutDesc layout;
@@ -36,7 +39,9 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::DrawPush);
     layout.pushConstantStages = vs;
-    pipeline_ = gpu::Pipeline(ctx, g, layout, "gbuffer");
+    opaque_ = gpu::Pipeline(ctx, g, layout, "gbuffer opaque");
+    g.fragment = kFragAlphaTested;
+    alphaTested_ = gpu::Pipeline(ctx, g, layout, "gbuffer alpha-tested");
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& frame,
@@ -71,21 +76,29 @@ void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Scene
     ri.pDepthAttachment = &depthInfo;
     vkCmdBeginRendering(cmd, &ri);
 
-    gpu::bind(cmd, pipeline_);
+    // Both pipelines share one layout, so descriptors pushed once serve both.
+    gpu::bind(cmd, opaque_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_GEOM_FRAME, frame.handle())
         .storageBuffer(sh::BIND_GEOM_DRAWS, scene.draws.handle())
         .storageBuffer(sh::BIND_GEOM_MATERIALS, scene.materials.handle())
-        .push(ctx_, cmd, pipeline_);
-    scene.bindGeometry(cmd, pipeline_.layout());
+        .push(ctx_, cmd, opaque_);
+    scene.bindGeometry(cmd, opaque_.layout());
     const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
-    for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-        const sh::DrawPush push{glm::uvec4(i, 0, 0, 0)};
-        gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_VERTEX_BIT, push);
-        const gpuscene::DrawRange& r = scene.ranges[i];
-        vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
+    // Opaque draws first, with a shader that cannot discard, so the depth test
+    // runs before shading and hidden fragments cost no texture fetches; the
+    // cut-outs after, tested against that depth.
+    for (bool alpha : {false, true}) {
+        gpu::bind(cmd, alpha ? alphaTested_ : opaque_);
+        for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
+            const gpuscene::DrawRange& r = scene.ranges[i];
+            if (r.alphaTested != alpha) continue;
+            const sh::DrawPush push{glm::uvec4(i, 0, 0, 0)};
+            gpu::pushConstants(cmd, opaque_, VK_SHADER_STAGE_VERTEX_BIT, push);
+            vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
+        }
     }
     vkCmdEndRendering(cmd);
 }

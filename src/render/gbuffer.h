@@ -28,7 +28,8 @@ public:
 
 private:
     const gpu::Context& ctx_;
-    gpu::Pipeline pipeline_;
+    gpu::Pipeline opaque_;       // OPAQUE materials: no discard, early depth test
+    gpu::Pipeline alphaTested_;  // MASK and BLEND materials
 };
 
 }  // namespace dvsgi::render

@@ -1,0 +1,71 @@
+// The G-buffer draws opaque materials with a shader that cannot discard (so
+// the depth test runs before shading) and cut-out materials after them with
+// one that can. Checked on a top-down view of three quads: a cut-out quad
+// (left half kept), an opaque floor under it and a small opaque quad above
+// it, with the cut-out listed first in the scene so the reordering matters.
+#include <cmath>
+#include <cstdio>
+
+#include "gpu_fixture.h"
+#include "render/renderer.h"
+
+namespace dvsgi::test {
+namespace {
+
+TEST_F(GpuTest, GBufferCutOutsShowOnlyWhereTheyExistAndBehindOpaqueSurfaces) {
+    scene::Scene s;
+    scene::Texture t;  // 8x1: opaque for u < 0.5, cut out for u >= 0.5
+    t.name = "half";
+    t.width = 8;
+    t.height = 1;
+    for (uint32_t x = 0; x < 8; ++x) t.rgba8.insert(t.rgba8.end(), {255, 255, 255, uint8_t(x < 4 ? 255 : 0)});
+    s.textures.push_back(t);
+    const glm::vec3 red(0.8f, 0.1f, 0.1f), blue(0.1f, 0.1f, 0.8f), green(0.1f, 0.8f, 0.1f);
+    const int cut = addMaterial(s, red);
+    s.materials[size_t(cut)].baseColorTexture = 0;
+    s.materials[size_t(cut)].alphaMode = scene::AlphaMode::Mask;
+    addQuad(s, cut, glm::vec3(0.0f, 0.5f, 0.0f), 1.0f);  // u = x / 2 + 0.5: kept where x < 0
+    addQuad(s, addMaterial(s, blue), glm::vec3(0.0f), 1.5f);
+    addQuad(s, addMaterial(s, green), glm::vec3(0.0f, 1.0f, 0.0f), 0.25f);
+    addTopDownCamera(s, 2.0f, glm::radians(60.0f));  // image right = +x, up = -z
+    render::RenderSettings rs;
+    rs.width = rs.height = 32;
+    rs.voxels = 32;
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 0;
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    const image::ImageRGBA32F albedo = r.readSurface().albedo;
+
+    // World x of a column's centre on a plane `d` below the camera.
+    const float tanHalf = std::tan(glm::radians(30.0f));
+    auto worldX = [&](uint32_t col, float d) { return ((float(col) + 0.5f) / 16.0f - 1.0f) * d * tanHalf; };
+    auto near = [](const float* p, glm::vec3 c) {
+        return std::abs(p[0] - c.r) < 0.02f && std::abs(p[1] - c.g) < 0.02f && std::abs(p[2] - c.b) < 0.02f;
+    };
+    int checked = 0, wrong = 0;
+    for (uint32_t y = 0; y < 32; ++y)
+        for (uint32_t x = 0; x < 32; ++x) {
+            const float zAtGreen = ((float(y) + 0.5f) / 16.0f - 1.0f) * tanHalf;  // d = 1
+            const float xAtGreen = worldX(x, 1.0f), xAtCut = worldX(x, 1.5f);
+            glm::vec3 expected;
+            if (std::abs(xAtGreen) < 0.23f && std::abs(zAtGreen) < 0.23f)
+                expected = green;  // opaque, above the cut-out
+            else if (std::abs(xAtGreen) < 0.27f && std::abs(zAtGreen) < 0.27f)
+                continue;  // the green quad's edge
+            else if (xAtCut < -0.1f)
+                expected = red;  // the kept half
+            else if (xAtCut > 0.1f)
+                expected = blue;  // the floor through the cut-out half
+            else
+                continue;  // the texture blends across the cut
+            ++checked;
+            if (!near(albedo.at(x, y), expected)) ++wrong;
+        }
+    std::printf("pixels checked %d, wrong %d\n", checked, wrong);
+    EXPECT_GT(checked, 700);
+    EXPECT_EQ(wrong, 0);
+}
+
+}  // namespace
+}  // namespace dvsgi::test
