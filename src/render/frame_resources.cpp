@@ -51,7 +51,9 @@ FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
     FrameTargets t;
     t.gbuffer = createGBuffer(ctx, iw, ih);
     t.shadowMap = image2D(ctx, VK_FORMAT_D32_SFLOAT, s.shadowMapSize, s.shadowMapSize,
-                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "shadow map array",
+                          VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                          "shadow map array",
                           std::max(s.shadowViews, 2u));
     t.direct = image2D(ctx, VK_FORMAT_R32G32B32A32_SFLOAT, iw, ih, storage, "direct radiance");
     t.visibility = image2D(ctx, VK_FORMAT_R16_SFLOAT, iw, ih, storage, "light visibility");

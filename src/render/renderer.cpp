@@ -288,7 +288,11 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
         list_->finish(cmd, tracker_, *volumes_, false);
         list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
     }
-    if (!pv_) shadows_->record(cmd, tracker_, *sceneGpu_, *views_, viewCount_, targets_->shadowMap, t);
+    if (!pv_) {
+        shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, targets_->shadowMap,
+                         staticDirty_ || shadowsStale_, t);
+        shadowsStale_ = false;
+    }
     if (!voxelizer_) return;
     const vxgi::ShadowInputs shadows{*lights_, lightCount_, *views_, targets_->shadowMap, samplers_->shadow.handle(),
                                      settings_.shadows};
@@ -333,6 +337,7 @@ std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
     // that no list entry names, which only new, larger volumes clear.
     if (growVoxelSlots()) return revoxelizeStatic();
     staticDirty_ = false;
+    shadowsStale_ = true;
     return timers_->results();
 }
 

@@ -133,8 +133,11 @@ public:
     // Re-runs static voxelization now, in its own submission (what the next
     // frame does after markStaticDirty), and returns its passes' GPU times:
     // how the bench times it beside ordinary frames. Empty without voxels.
+    // The next frame renders the static shadow depth again too, as if the
+    // static geometry had moved.
     std::vector<gpu::TimerResult> revoxelizeStatic();
 
+    const ShadowPass& shadows() const { return *shadows_; }
     // The voxel volumes (with --clipmap, level 0's, the finest).
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
@@ -263,6 +266,7 @@ private:
     uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
+    bool shadowsStale_ = false;  // render static shadow depth again (after revoxelizeStatic)
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
     // --voxel-temporal-alpha: per level, the light each slot reflected after

@@ -12,6 +12,7 @@
 #include "gpu/transfer.h"
 #include "gpuscene/scene_gpu.h"
 #include "render/renderer.h"
+#include "render/shadows.h"
 #include "vxgi/voxelize.h"
 
 namespace dvsgi::render {
@@ -43,6 +44,7 @@ std::vector<MemoryItem> Renderer::memory() const {
                                                             : 0)},
         {"output", targets_->output.memorySize()},
     };
+    if (shadows_->cacheBytes()) items.push_back({"shadow maps: kept static depth", shadows_->cacheBytes()});
     if (targets_->temporal.memoryBytes()) items.push_back({"indirect history", targets_->temporal.memoryBytes()});
     if (voxelizer_) {
         items.push_back({"voxel slot index", volumes_->index.size()});

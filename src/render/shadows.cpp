@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -128,12 +129,53 @@ ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ct
     opaque_ = gpu::Pipeline(ctx, g, layout, "shadow opaque");
     g.fragment = kShadowFrag;
     alphaTested_ = gpu::Pipeline(ctx, g, layout, "shadow alpha-tested");
+    for (const gpuscene::DrawRange& r : scene.ranges) hasDynamic_ = hasDynamic_ || r.dynamic;
 }
 
 void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        uint32_t viewCount, const gpu::Image& map, gpu::GpuTimers* timers) const {
+                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map, bool staticChanged,
+                        gpu::GpuTimers* timers) {
     gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
-    tracker.image(map, gpu::use::DepthAttachment, true).flush(cmd);
+    const uint32_t viewCount = uint32_t(hostViews.size());
+    const size_t viewBytes = hostViews.size() * sizeof(sh::GpuShadowView);
+    reused_ = !staticChanged && keptMap_ == map.serial() && keptViews_.size() == hostViews.size() &&
+              std::memcmp(keptViews_.data(), hostViews.data(), viewBytes) == 0;
+    if (viewCount == 0) return;
+    if (!hasDynamic_) {
+        if (!reused_) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true);
+    } else {
+        if (!reused_) {
+            if (!cache_.handle() || cache_.desc().layers != map.desc().layers ||
+                cache_.desc().extent.width != map.desc().extent.width) {
+                gpu::ImageDesc d = map.desc();
+                d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                          VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+                d.name = "shadow map static cache";
+                cache_ = gpu::Image(ctx_, d);
+            }
+            render(cmd, tracker, scene, views, viewCount, cache_, Draws::Static, true);
+        }
+        copyLayers(cmd, tracker, cache_, map, viewCount);
+        render(cmd, tracker, scene, views, viewCount, map, Draws::Dynamic, false);
+    }
+    keptViews_ = hostViews;
+    keptMap_ = map.serial();
+}
+
+void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
+                            uint32_t layers) const {
+    tracker.image(from, gpu::use::TransferSrc).image(to, gpu::use::TransferDst, true).flush(cmd);
+    VkImageCopy region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, layers};
+    region.dstSubresource = region.srcSubresource;
+    region.extent = from.desc().extent;
+    vkCmdCopyImage(cmd, from.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(),
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+}
+
+void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
+                        uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear) const {
+    tracker.image(map, gpu::use::DepthAttachment, clear).flush(cmd);
     const uint32_t size = map.desc().extent.width;
     // Both pipelines share one layout, so descriptors pushed once serve both.
     gpu::bind(cmd, opaque_);
@@ -152,7 +194,7 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = map.layerView(v);
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-        depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        depth.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
         depth.clearValue.depthStencil = {1.0f, 0};
         VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -167,6 +209,7 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
             for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
                 const gpuscene::DrawRange& r = scene.ranges[i];
                 if (r.alphaTested != alpha) continue;
+                if ((draws == Draws::Static && r.dynamic) || (draws == Draws::Dynamic && !r.dynamic)) continue;
                 const sh::DrawPush push{glm::uvec4(i, v, 0, 0)};
                 gpu::pushConstants(cmd, opaque_, VK_SHADER_STAGE_VERTEX_BIT, push);
                 vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);

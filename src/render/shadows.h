@@ -49,17 +49,40 @@ float shadowFocusRadius(const scene::Bounds& bounds, float halfSide);
 LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,
                        uint32_t shadowMapSize, bool shadows, const ShadowFocus& focus = {});
 
+// Static geometry's depth is kept between frames: it is rendered again only
+// when the views (lights, bounds, a focus that moved) or the static geometry
+// changed. With dynamic draws in the scene a copy of it (`cache`) is restored
+// into the map each frame and only the dynamic draws are rendered over it;
+// without, the map itself is kept.
 class ShadowPass {
 public:
     ShadowPass(const gpu::Context& ctx, const SceneGpu& scene);
-    // Renders view v of `views` into layer v of `map` (FrameTargets::shadowMap).
+    // Renders view v of `views` (`hostViews` on the host) into layer v of
+    // `map` (FrameTargets::shadowMap). `staticChanged`: static geometry moved
+    // (or everything is to be treated as new): the kept depth is stale.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                uint32_t viewCount, const gpu::Image& map, gpu::GpuTimers* timers) const;
+                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map, bool staticChanged,
+                gpu::GpuTimers* timers);
+    // Bytes of the kept static depth (0 when the map itself is kept).
+    VkDeviceSize cacheBytes() const { return cache_.handle() ? cache_.memorySize() : 0; }
+    // Whether the last record() reused the static depth (tests).
+    bool reusedStatic() const { return reused_; }
 
 private:
+    enum class Draws { All, Static, Dynamic };
+    void render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
+                uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear) const;
+    void copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
+                    uint32_t layers) const;
+
     const gpu::Context& ctx_;
     gpu::Pipeline opaque_;       // depth only: no fragment shader, so no fragment work
     gpu::Pipeline alphaTested_;  // discards where MASK/BLEND coverage says there is no surface
+    bool hasDynamic_ = false;
+    gpu::Image cache_;  // static draws' depth, when there are dynamic draws
+    std::vector<shader::GpuShadowView> keptViews_;
+    uint64_t keptMap_ = 0;  // serial of the map the kept depth belongs to (0: nothing kept)
+    bool reused_ = false;
 };
 
 }  // namespace dvsgi::render
