@@ -24,11 +24,15 @@ const uint32_t kFragAlphaTested[] = {
 
 }  // namespace
 
+gpu::Spirv gbufferFragmentShader(bool alphaTested) {
+    return alphaTested ? gpu::Spirv(kFragAlphaTested) : gpu::Spirv(kFrag);
+}
+
 GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ctx) {
     constexpr VkFormat kColorFormat = GBuffer::kColorFormat;
     gpu::GraphicsDesc g;
     g.vertex = kVert;
-    g.fragment = kFragAlphaTested;
+    g.fragment = gbufferFragmentShader(false);
     g.colorFormats = {kColorFormat, kColorFormat, kColorFormat};
     g.depthFormat = GBuffer::kDepthFormat;
     gpu::LayoutDesc layout;
@@ -40,7 +44,7 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(
     layout.pushConstantBytes = sizeof(sh::DrawPush);
     layout.pushConstantStages = vs;
     opaque_ = gpu::Pipeline(ctx, g, layout, "gbuffer opaque");
-    g.fragment = kFragAlphaTested;
+    g.fragment = gbufferFragmentShader(true);
     alphaTested_ = gpu::Pipeline(ctx, g, layout, "gbuffer alpha-tested");
 }
 

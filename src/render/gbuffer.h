@@ -19,6 +19,11 @@ namespace dvsgi::render {
 
 using gpuscene::SceneGpu;
 
+// The G-buffer's fragment shader: the variant that can discard (MASK/BLEND
+// coverage) or the one for opaque materials, which must not, so the depth test
+// can run before shading.
+gpu::Spirv gbufferFragmentShader(bool alphaTested);
+
 class GBufferPass {
 public:
     GBufferPass(const gpu::Context& ctx, const SceneGpu& scene);

@@ -289,8 +289,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
         list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
     }
     if (!pv_) {
-        shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, targets_->shadowMap,
-                         staticDirty_ || shadowsStale_, t);
+        shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, targets_->shadowMap, staticShadows(), t);
         shadowsStale_ = false;
     }
     if (!voxelizer_) return;
@@ -326,7 +325,13 @@ void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     list_->finish(cmd, tracker_, *volumes_, true);
 }
 
+StaticShadows Renderer::staticShadows() const {
+    if (shadowsStale_) return StaticShadows::Uncached;
+    return staticDirty_ ? StaticShadows::Changed : StaticShadows::Kept;
+}
+
 std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
+    shadowsStale_ = true;
     if (!voxelizer_ || pv_) return {};
     timers_->reset();
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -337,7 +342,6 @@ std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {
     // that no list entry names, which only new, larger volumes clear.
     if (growVoxelSlots()) return revoxelizeStatic();
     staticDirty_ = false;
-    shadowsStale_ = true;
     return timers_->results();
 }
 

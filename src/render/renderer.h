@@ -86,6 +86,7 @@ struct MemoryItem {
 };
 
 class ShadowPass;
+enum class StaticShadows;
 class GBufferPass;
 class LightingPass;
 class CompositePass;
@@ -133,8 +134,9 @@ public:
     // Re-runs static voxelization now, in its own submission (what the next
     // frame does after markStaticDirty), and returns its passes' GPU times:
     // how the bench times it beside ordinary frames. Empty without voxels.
-    // The next frame renders the static shadow depth again too, as if the
-    // static geometry had moved.
+    // The next frame renders every shadow again and keeps none of them
+    // (StaticShadows::Uncached), so it costs what an everything-dynamic frame
+    // does.
     std::vector<gpu::TimerResult> revoxelizeStatic();
 
     const ShadowPass& shadows() const { return *shadows_; }
@@ -266,7 +268,8 @@ private:
     uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
-    bool shadowsStale_ = false;  // render static shadow depth again (after revoxelizeStatic)
+    StaticShadows staticShadows() const;  // what the shadow pass may reuse this frame
+    bool shadowsStale_ = false;  // the next frame's shadows: StaticShadows::Uncached (after revoxelizeStatic)
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
     // --voxel-temporal-alpha: per level, the light each slot reflected after

@@ -107,7 +107,7 @@ void Renderer::injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& vie
 void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     FrameTargets& f = *targets_;
-    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, f.shadowMap, staticDirty_ || shadowsStale_, t);
+    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, f.shadowMap, staticShadows(), t);
     shadowsStale_ = false;
     gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
     recordPvViews(cmd, rsm_, "pv rsm");

@@ -133,23 +133,31 @@ ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ct
 }
 
 void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map, bool staticChanged,
+                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map, StaticShadows statics,
                         gpu::GpuTimers* timers) {
     gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
     const uint32_t viewCount = uint32_t(hostViews.size());
-    const size_t viewBytes = hostViews.size() * sizeof(sh::GpuShadowView);
-    reused_ = !staticChanged && keptMap_ == map.serial() && keptViews_.size() == hostViews.size() &&
-              std::memcmp(keptViews_.data(), hostViews.data(), viewBytes) == 0;
+    reused_ = statics == StaticShadows::Kept && keptMap_ == map.serial() && keptViews_.size() == hostViews.size() &&
+              std::equal(hostViews.begin(), hostViews.end(), keptViews_.begin(),
+                         [](const sh::GpuShadowView& a, const sh::GpuShadowView& b) {
+                             return std::memcmp(&a, &b, sizeof(a)) == 0;
+                         });
+    // Nothing is kept across a frame without views (shadows off) or one that
+    // keeps nothing: static geometry may move meanwhile.
+    keptMap_ = 0;
+    keptViews_.clear();
     if (viewCount == 0) return;
+    if (statics == StaticShadows::Uncached) {
+        render(cmd, tracker, scene, views, viewCount, map, Draws::All, true);
+        return;
+    }
     if (!hasDynamic_) {
         if (!reused_) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true);
     } else {
         if (!reused_) {
-            if (!cache_.handle() || cache_.desc().layers != map.desc().layers ||
-                cache_.desc().extent.width != map.desc().extent.width) {
+            if (!cache_.handle()) {
                 gpu::ImageDesc d = map.desc();
-                d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                          VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+                d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
                 d.name = "shadow map static cache";
                 cache_ = gpu::Image(ctx_, d);
             }

@@ -54,14 +54,20 @@ LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scen
 // changed. With dynamic draws in the scene a copy of it (`cache`) is restored
 // into the map each frame and only the dynamic draws are rendered over it;
 // without, the map itself is kept.
+enum class StaticShadows {
+    Kept,      // static geometry as last frame: its depth is reused while the views are unchanged
+    Changed,   // static geometry moved: render it again and keep it
+    Uncached,  // render every draw into the map and keep nothing (a frame that stands for an
+               // everything-dynamic one: the bench's, after Renderer::revoxelizeStatic)
+};
+
 class ShadowPass {
 public:
     ShadowPass(const gpu::Context& ctx, const SceneGpu& scene);
     // Renders view v of `views` (`hostViews` on the host) into layer v of
-    // `map` (FrameTargets::shadowMap). `staticChanged`: static geometry moved
-    // (or everything is to be treated as new): the kept depth is stale.
+    // `map` (FrameTargets::shadowMap).
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map, bool staticChanged,
+                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map, StaticShadows statics,
                 gpu::GpuTimers* timers);
     // Bytes of the kept static depth (0 when the map itself is kept).
     VkDeviceSize cacheBytes() const { return cache_.handle() ? cache_.memorySize() : 0; }

@@ -1,16 +1,36 @@
 // The G-buffer draws opaque materials with a shader that cannot discard (so
 // the depth test runs before shading) and cut-out materials after them with
-// one that can. Checked on a top-down view of three quads: a cut-out quad
-// (left half kept), an opaque floor under it and a small opaque quad above
-// it, with the cut-out listed first in the scene so the reordering matters.
+// one that can: the opaque variant's SPIR-V holds no instruction that ends an
+// invocation, and a top-down view of three quads (a cut-out quad with its left
+// half kept, an opaque floor under it, a small opaque quad above it) shows
+// each surface only where it exists and is nearest.
 #include <cmath>
 #include <cstdio>
 
 #include "gpu_fixture.h"
+#include "render/gbuffer.h"
 #include "render/renderer.h"
 
 namespace dvsgi::test {
 namespace {
+
+// Instructions of a SPIR-V module that end or demote a fragment invocation.
+int discardInstructions(gpu::Spirv code) {
+    constexpr uint32_t kOpKill = 252, kOpTerminateInvocation = 4416, kOpDemoteToHelperInvocation = 5380;
+    int n = 0;
+    for (size_t i = 5; i < code.size();) {  // after the five-word header
+        const uint32_t words = code[i] >> 16, op = code[i] & 0xFFFFu;
+        n += op == kOpKill || op == kOpTerminateInvocation || op == kOpDemoteToHelperInvocation;
+        if (words == 0) break;  // malformed: stop rather than loop
+        i += words;
+    }
+    return n;
+}
+
+TEST(GBufferShaders, OnlyTheAlphaTestedVariantCanDiscard) {
+    EXPECT_EQ(discardInstructions(render::gbufferFragmentShader(false)), 0);
+    EXPECT_GT(discardInstructions(render::gbufferFragmentShader(true)), 0);
+}
 
 TEST_F(GpuTest, GBufferCutOutsShowOnlyWhereTheyExistAndBehindOpaqueSurfaces) {
     scene::Scene s;
@@ -30,9 +50,7 @@ TEST_F(GpuTest, GBufferCutOutsShowOnlyWhereTheyExistAndBehindOpaqueSurfaces) {
     addTopDownCamera(s, 2.0f, glm::radians(60.0f));  // image right = +x, up = -z
     render::RenderSettings rs;
     rs.width = rs.height = 32;
-    rs.voxels = 32;
-    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-    rs.voxelLight.bounces = 0;
+    rs.voxels = 0;  // the G-buffer alone
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     const image::ImageRGBA32F albedo = r.readSurface().albedo;
