@@ -60,6 +60,15 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
             {uint32_t(allIndices.size()), uint32_t(p.indices.size()), int32_t(allVertices.size()), alphaTested, false});
         allVertices.insert(allVertices.end(), p.vertices.begin(), p.vertices.end());
         allIndices.insert(allIndices.end(), p.indices.begin(), p.indices.end());
+        std::vector<scene::Bounds>& chunks = primitiveChunks.emplace_back();
+        const size_t used = p.indices.size() / 3 * 3;  // whole triangles
+        for (size_t i = 0; i < used; ++i) {
+            if (i % (3 * kBoundsChunk) == 0) chunks.emplace_back();
+            const uint32_t v = p.indices[i];
+            if (v >= p.vertices.size()) continue;  // the loader rejects these; stay in bounds regardless
+            chunks.back().min = glm::min(chunks.back().min, p.vertices[v].position);
+            chunks.back().max = glm::max(chunks.back().max, p.vertices[v].position);
+        }
     }
     vertices = gpu::createBuffer(ctx, allVertices.data(), allVertices.size() * sizeof(scene::Vertex),
                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "vertices");
@@ -111,6 +120,8 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
     for (const scene::DrawItem& it : items) {
         ranges.push_back(primitiveRanges_[it.primitive]);
         ranges.back().dynamic = isDynamicNode(scene, it.node);
+        drawPrimitive.push_back(it.primitive);
+        drawWorld.push_back(it.world);
     }
     std::vector<sh::GpuDraw> gpuDraws = toGpu(scene, items);
     draws = gpu::createBuffer(ctx, gpuDraws.data(), gpuDraws.size() * sizeof(sh::GpuDraw),
@@ -134,6 +145,7 @@ void SceneGpu::updateDraws(const gpu::Context& ctx, const scene::Scene& scene,
     std::vector<sh::GpuDraw> gpuDraws = toGpu(scene, items);
     gpu::uploadBuffer(ctx, draws, gpuDraws.data(), gpuDraws.size() * sizeof(sh::GpuDraw));
     bounds = scene::worldBounds(scene, items);
+    for (size_t i = 0; i < items.size(); ++i) drawWorld[i] = items[i].world;
 }
 
 }  // namespace dvsgi::gpuscene

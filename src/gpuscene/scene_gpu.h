@@ -39,6 +39,15 @@ public:
     scene::Bounds bounds;
     uint64_t triangleCount = 0;
 
+    // Host copies for culling on the CPU (the compute voxelizer after a
+    // clipmap scroll): each primitive's bounds, local, per run of
+    // kBoundsChunk consecutive triangles, and each draw's primitive and world
+    // matrix (updateDraws keeps them current).
+    static constexpr uint32_t kBoundsChunk = 64;
+    std::vector<std::vector<scene::Bounds>> primitiveChunks;
+    std::vector<uint32_t> drawPrimitive;
+    std::vector<glm::mat4> drawWorld;
+
 private:
     std::vector<DrawRange> primitiveRanges_;  // per scene primitive
 };

@@ -182,6 +182,7 @@ sh::VoxelGrid gpuVoxelGrid(const GridSpec& g, uint32_t slots, const glm::ivec4& 
 
 void VoxelVolumes::setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const GridSpec& g, const glm::ivec4& keep) {
     grid = g;
+    keptByScroll = keep;
     const sh::VoxelGrid v = gpuVoxelGrid(g, slots, keep);
     gpu::recordUniformUpdate(cmd, tracker, gridBuffer, &v, sizeof(v));
 }

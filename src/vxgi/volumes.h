@@ -84,6 +84,7 @@ public:
                  std::shared_ptr<DenseVolumes> dense = nullptr);
 
     GridSpec grid;
+    glm::ivec4 keptByScroll{0};  // the `keep` of the last setGrid (w != 0: a scroll's kept box)
     uint32_t directionalMips;
     uint32_t slots;       // slot capacity (whole rows of VOXEL_SLOT_ROW)
     gpu::Image accum;     // R32_SFLOAT, ROW x rows x VOXEL_CHANNELS: summed attributes per slot

@@ -26,15 +26,35 @@ const uint32_t kComp[] = {
 #include "shaders/voxelize.comp.inc"
 };
 
-// Groups of up to VOXC_GROUP consecutive triangles, never two draws in one.
-void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out) {
+// A group's triangles are one chunk of SceneGpu::primitiveChunks.
+static_assert(gpuscene::SceneGpu::kBoundsChunk == sh::VOXC_GROUP);
+
+// Groups of up to VOXC_GROUP consecutive triangles, never two draws in one;
+// `chunks` gets each group's draw and chunk.
+void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out,
+                  std::vector<glm::uvec2>& chunks) {
     for (uint32_t d = 0; d < scene.ranges.size(); ++d) {
         const gpuscene::DrawRange& r = scene.ranges[d];
         if (r.dynamic != dynamic) continue;
         const uint32_t triangles = r.indexCount / 3;
-        for (uint32_t first = 0; first < triangles; first += sh::VOXC_GROUP)
+        for (uint32_t first = 0; first < triangles; first += sh::VOXC_GROUP) {
             out.push_back({glm::uvec4(d, r.firstIndex + 3 * first, std::bit_cast<uint32_t>(r.vertexOffset),
                                       std::min(sh::VOXC_GROUP, triangles - first))});
+            chunks.push_back(glm::uvec2(d, first / sh::VOXC_GROUP));
+        }
+    }
+}
+
+// World bounds of a local box under `world` (its eight corners).
+void worldBox(const scene::Bounds& local, const glm::mat4& world, glm::vec3& lo, glm::vec3& hi) {
+    lo = glm::vec3(1e30f);
+    hi = glm::vec3(-1e30f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 p((c & 1) ? local.max.x : local.min.x, (c & 2) ? local.max.y : local.min.y,
+                          (c & 4) ? local.max.z : local.min.z);
+        const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
+        lo = glm::min(lo, w);
+        hi = glm::max(hi, w);
     }
 }
 
@@ -43,6 +63,18 @@ void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh:
 // llvmpipe would cut a longer walk short (shared/voxelize_compute_pass.h).
 static_assert(uint64_t(sh::VOXC_WALK_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
 static_assert(uint64_t(sh::VOXC_LANE_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
+
+bool groupReachesWrittenVoxels(const glm::vec3& lo, const glm::vec3& hi, const GridSpec& grid, const glm::ivec4& keep) {
+    // The shader's closed box of each triangle, grown by two voxels for the
+    // rounding between these float bounds and its own.
+    const int n = int(grid.n);
+    const glm::ivec3 a = glm::max(glm::ivec3(glm::floor((lo - grid.origin) / grid.voxelSize)) - 3, glm::ivec3(0));
+    const glm::ivec3 b = glm::min(glm::ivec3(glm::floor((hi - grid.origin) / grid.voxelSize)) + 2, glm::ivec3(n - 1));
+    if (glm::any(glm::greaterThan(a, b))) return false;  // misses the grid
+    if (keep.w == 0) return true;
+    const glm::ivec3 k = glm::ivec3(keep);
+    return !(glm::all(glm::greaterThanEqual(a, k)) && glm::all(glm::lessThan(b, k + n)));
+}
 
 ComputeTiling computeTilingFor(VkPhysicalDeviceType type) {
     if (type == VK_PHYSICAL_DEVICE_TYPE_CPU)
@@ -86,13 +118,18 @@ ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::Scen
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxelize (compute)");
 
     std::vector<sh::VoxcGroup> groups;
-    appendGroups(scene, false, groups);
+    std::vector<glm::uvec2> dynamicChunks;
+    appendGroups(scene, false, groups, staticGroupChunks_);
     staticGroups_ = uint32_t(groups.size());
-    appendGroups(scene, true, groups);
+    staticGroupsHost_ = groups;
+    appendGroups(scene, true, groups, dynamicChunks);
     dynamicGroups_ = uint32_t(groups.size()) - staticGroups_;
     if (groups.empty()) groups.push_back({});  // a buffer needs a size; no dispatch reads it
     groups_ = gpu::createBuffer(ctx, groups.data(), groups.size() * sizeof(sh::VoxcGroup),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "voxelize groups");
+    scrollGroups_ = gpu::Buffer(ctx, std::max(staticGroups_, 1u) * sizeof(sh::VoxcGroup),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                gpu::MemoryUse::Device, "voxelize scroll groups");
     tiles_ = gpu::Buffer(ctx, sh::VOXC_MAX_TILES * sizeof(sh::VoxcTile), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                          gpu::MemoryUse::Device, "voxelize tiles");
     indirect_ = gpu::Buffer(ctx, 4 * sizeof(uint32_t),
@@ -107,12 +144,40 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     if (scene.ranges.size() != drawCount_)
         throw std::logic_error("ComputeVoxelizer::voxelize: the scene's draws changed");
     const bool dynamic = mode == VoxelizeMode::Dynamic;
-    const uint32_t first = dynamic ? staticGroups_ : 0, count = dynamic ? dynamicGroups_ : staticGroups_;
-    if (count == 0) return;
-
+    uint32_t first = dynamic ? staticGroups_ : 0, count = dynamic ? dynamicGroups_ : staticGroups_;
     // Buffers are not images: their uses are stage + access pairs (as bounce.cpp's statistics).
     const VkPipelineStageFlags2 compute = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     const VkAccessFlags2 readWrite = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+    const gpu::Buffer* groupTable = &groups_;
+    if (!dynamic && v.keptByScroll.w != 0) {
+        // After a clipmap scroll only the exposed slabs are written: every
+        // triangle would load itself to find that out, so groups far from the
+        // slabs are left out here (their bounds from the scene's host copy).
+        std::vector<sh::VoxcGroup> selected;
+        for (uint32_t g = 0; g < staticGroups_; ++g) {
+            const glm::uvec2 dc = staticGroupChunks_[g];
+            glm::vec3 lo, hi;
+            worldBox(scene.primitiveChunks[scene.drawPrimitive[dc.x]][dc.y], scene.drawWorld[dc.x], lo, hi);
+            if (groupReachesWrittenVoxels(lo, hi, v.grid, v.keptByScroll)) selected.push_back(staticGroupsHost_[g]);
+        }
+        first = 0;
+        count = uint32_t(selected.size());
+        if (count > 0) {
+            tracker.buffer(scrollGroups_, gpu::use::BufferTransferWrite).flush(cmd);
+            // vkCmdUpdateBuffer takes at most 65536 bytes a call.
+            const size_t perCall = 65536 / sizeof(sh::VoxcGroup);
+            for (size_t at = 0; at < selected.size(); at += perCall) {
+                const size_t n = std::min(perCall, selected.size() - at);
+                vkCmdUpdateBuffer(cmd, scrollGroups_.handle(), at * sizeof(sh::VoxcGroup), n * sizeof(sh::VoxcGroup),
+                                  selected.data() + at);
+            }
+            tracker.buffer(scrollGroups_, compute, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+            groupTable = &scrollGroups_;
+        }
+    }
+    if (!dynamic) lastStaticGroups_ = count;
+    if (count == 0) return;
+
     tracker.buffer(indirect_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT).flush(cmd);
     const uint32_t reset[4] = {0, 1, 1, 0};  // no tiles queued: an empty dispatch
     vkCmdUpdateBuffer(cmd, indirect_.handle(), 0, sizeof(reset), reset);
@@ -132,7 +197,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .storageBuffer(sh::BIND_VOXC_INDEX, v.index.handle())
         .storageBuffer(sh::BIND_VOXC_VERTICES, scene.vertices.handle())
         .storageBuffer(sh::BIND_VOXC_INDICES, scene.indices.handle())
-        .storageBuffer(sh::BIND_VOXC_GROUPS, groups_.handle())
+        .storageBuffer(sh::BIND_VOXC_GROUPS, groupTable->handle())
         .storageBuffer(sh::BIND_VOXC_TILES, tiles_.handle())
         .storageBuffer(sh::BIND_VOXC_INDIRECT, indirect_.handle())
         .storageBuffer(sh::BIND_VOXC_LIST, v.list.handle())

@@ -7,6 +7,7 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "shared/voxelize_compute_pass.h"
 
 namespace dvsgi::gpu {
 class Tracker;
@@ -18,6 +19,7 @@ class SceneGpu;
 namespace dvsgi::vxgi {
 
 class VoxelVolumes;
+struct GridSpec;
 enum class VoxelizeMode;
 
 // How the compute voxelizer splits large triangles (shared/voxelize_compute_pass.h).
@@ -30,6 +32,12 @@ struct ComputeTiling {
 // sample their hits in batches).
 ComputeTiling computeTilingFor(VkPhysicalDeviceType type);
 
+// Whether a triangle group whose world bounds are [lo, hi] can touch a voxel
+// that static voxelization writes on `grid` with `keep` (shader::VoxelGrid.keep:
+// after a clipmap scroll only the voxels outside the kept box). Conservative:
+// two voxels of margin beyond the shader's own test of each triangle.
+bool groupReachesWrittenVoxels(const glm::vec3& lo, const glm::vec3& hi, const GridSpec& grid, const glm::ivec4& keep);
+
 class ComputeVoxelizer {
 public:
     // Throws when the device lacks shaderFloat64 (the exact test needs it).
@@ -41,11 +49,19 @@ public:
     // The device type picks the tiling; tests set others (every triangle
     // tiled, none, one or several columns per lane) to check every path.
     void setTiling(ComputeTiling tiling);
+    // Triangle groups the last static voxelization dispatched, and how many
+    // static groups the scene has (after a scroll, only those near the slabs).
+    uint32_t lastStaticGroups() const { return lastStaticGroups_; }
+    uint32_t staticGroups() const { return staticGroups_; }
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
     gpu::Buffer groups_;    // shader::VoxcGroup: the static draws' groups, then the dynamic ones'
+    gpu::Buffer scrollGroups_;  // the static groups a scroll's slabs need (filled per scroll)
+    std::vector<shader::VoxcGroup> staticGroupsHost_;
+    std::vector<glm::uvec2> staticGroupChunks_;  // per static group: draw, chunk of SceneGpu::primitiveChunks
+    mutable uint32_t lastStaticGroups_ = 0;
     gpu::Buffer tiles_;     // shader::VoxcTile[VOXC_MAX_TILES]
     gpu::Buffer indirect_;  // the tile phase's dispatch
     uint32_t staticGroups_ = 0, dynamicGroups_ = 0;
