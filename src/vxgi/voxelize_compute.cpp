@@ -32,7 +32,7 @@ static_assert(gpuscene::SceneGpu::kBoundsChunk == sh::VOXC_GROUP);
 // Groups of up to VOXC_GROUP consecutive triangles, never two draws in one;
 // `chunks` gets each group's draw and chunk.
 void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out,
-                  std::vector<glm::uvec2>& chunks) {
+                  std::vector<glm::uvec2>* chunks = nullptr) {
     for (uint32_t d = 0; d < scene.ranges.size(); ++d) {
         const gpuscene::DrawRange& r = scene.ranges[d];
         if (r.dynamic != dynamic) continue;
@@ -40,13 +40,18 @@ void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh:
         for (uint32_t first = 0; first < triangles; first += sh::VOXC_GROUP) {
             out.push_back({glm::uvec4(d, r.firstIndex + 3 * first, std::bit_cast<uint32_t>(r.vertexOffset),
                                       std::min(sh::VOXC_GROUP, triangles - first))});
-            chunks.push_back(glm::uvec2(d, first / sh::VOXC_GROUP));
+            if (chunks) chunks->push_back(glm::uvec2(d, first / sh::VOXC_GROUP));
         }
     }
 }
 
-// World bounds of a local box under `world` (its eight corners).
-void worldBox(const scene::Bounds& local, const glm::mat4& world, glm::vec3& lo, glm::vec3& hi) {
+}  // namespace
+
+// llvmpipe would cut a longer walk short (shared/voxelize_compute_pass.h).
+static_assert(uint64_t(sh::VOXC_WALK_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
+static_assert(uint64_t(sh::VOXC_LANE_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
+
+void chunkWorldBounds(const scene::Bounds& local, const glm::mat4& world, glm::vec3& lo, glm::vec3& hi) {
     lo = glm::vec3(1e30f);
     hi = glm::vec3(-1e30f);
     for (int c = 0; c < 8; ++c) {
@@ -58,18 +63,17 @@ void worldBox(const scene::Bounds& local, const glm::mat4& world, glm::vec3& lo,
     }
 }
 
-}  // namespace
-
-// llvmpipe would cut a longer walk short (shared/voxelize_compute_pass.h).
-static_assert(uint64_t(sh::VOXC_WALK_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
-static_assert(uint64_t(sh::VOXC_LANE_COLUMNS_CPU) * sh::VOXC_WALK_LOOPS_PER_COLUMN < sh::LLVMPIPE_LOOP_BUDGET / 2);
-
 bool groupReachesWrittenVoxels(const glm::vec3& lo, const glm::vec3& hi, const GridSpec& grid, const glm::ivec4& keep) {
-    // The shader's closed box of each triangle, grown by two voxels for the
-    // rounding between these float bounds and its own.
+    // The shader's closed box of each triangle (ceil(lo - growth) - 1 ..
+    // floor(hi + growth)), grown by two more voxels for the rounding between
+    // these float bounds and its own; clamped in float first, so far-away or
+    // unset bounds cannot overflow the conversion to int.
     const int n = int(grid.n);
-    const glm::ivec3 a = glm::max(glm::ivec3(glm::floor((lo - grid.origin) / grid.voxelSize)) - 3, glm::ivec3(0));
-    const glm::ivec3 b = glm::min(glm::ivec3(glm::floor((hi - grid.origin) / grid.voxelSize)) + 2, glm::ivec3(n - 1));
+    const glm::vec3 limit(float(n) + 8.0f);
+    const glm::vec3 fa = glm::clamp(glm::floor((lo - grid.origin) / grid.voxelSize), -limit, limit);
+    const glm::vec3 fb = glm::clamp(glm::floor((hi - grid.origin) / grid.voxelSize), -limit, limit);
+    const glm::ivec3 a = glm::max(glm::ivec3(fa) - 3, glm::ivec3(0));
+    const glm::ivec3 b = glm::min(glm::ivec3(fb) + 2, glm::ivec3(n - 1));
     if (glm::any(glm::greaterThan(a, b))) return false;  // misses the grid
     if (keep.w == 0) return true;
     const glm::ivec3 k = glm::ivec3(keep);
@@ -118,11 +122,10 @@ ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::Scen
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxelize (compute)");
 
     std::vector<sh::VoxcGroup> groups;
-    std::vector<glm::uvec2> dynamicChunks;
-    appendGroups(scene, false, groups, staticGroupChunks_);
+    appendGroups(scene, false, groups, &staticGroupChunks_);
     staticGroups_ = uint32_t(groups.size());
     staticGroupsHost_ = groups;
-    appendGroups(scene, true, groups, dynamicChunks);
+    appendGroups(scene, true, groups);
     dynamicGroups_ = uint32_t(groups.size()) - staticGroups_;
     if (groups.empty()) groups.push_back({});  // a buffer needs a size; no dispatch reads it
     groups_ = gpu::createBuffer(ctx, groups.data(), groups.size() * sizeof(sh::VoxcGroup),
@@ -157,12 +160,14 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         for (uint32_t g = 0; g < staticGroups_; ++g) {
             const glm::uvec2 dc = staticGroupChunks_[g];
             glm::vec3 lo, hi;
-            worldBox(scene.primitiveChunks[scene.drawPrimitive[dc.x]][dc.y], scene.drawWorld[dc.x], lo, hi);
+            chunkWorldBounds(scene.primitiveChunks.at(scene.drawPrimitive.at(dc.x)).at(dc.y), scene.drawWorld.at(dc.x),
+                             lo, hi);
             if (groupReachesWrittenVoxels(lo, hi, v.grid, v.keptByScroll)) selected.push_back(staticGroupsHost_[g]);
         }
         first = 0;
         count = uint32_t(selected.size());
-        if (count > 0) {
+        // When every group is needed the table as it is serves, without an upload.
+        if (count > 0 && count < staticGroups_) {
             tracker.buffer(scrollGroups_, gpu::use::BufferTransferWrite).flush(cmd);
             // vkCmdUpdateBuffer takes at most 65536 bytes a call.
             const size_t perCall = 65536 / sizeof(sh::VoxcGroup);
@@ -175,7 +180,6 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
             groupTable = &scrollGroups_;
         }
     }
-    if (!dynamic) lastStaticGroups_ = count;
     if (count == 0) return;
 
     tracker.buffer(indirect_, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT).flush(cmd);

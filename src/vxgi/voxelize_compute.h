@@ -7,6 +7,7 @@
 
 #include "gpu/pipeline.h"
 #include "gpu/resources.h"
+#include "scene/scene.h"
 #include "shared/voxelize_compute_pass.h"
 
 namespace dvsgi::gpu {
@@ -37,6 +38,8 @@ ComputeTiling computeTilingFor(VkPhysicalDeviceType type);
 // after a clipmap scroll only the voxels outside the kept box). Conservative:
 // two voxels of margin beyond the shader's own test of each triangle.
 bool groupReachesWrittenVoxels(const glm::vec3& lo, const glm::vec3& hi, const GridSpec& grid, const glm::ivec4& keep);
+// World bounds [lo, hi] of a local box under `world` (its eight corners).
+void chunkWorldBounds(const scene::Bounds& local, const glm::mat4& world, glm::vec3& lo, glm::vec3& hi);
 
 class ComputeVoxelizer {
 public:
@@ -49,10 +52,6 @@ public:
     // The device type picks the tiling; tests set others (every triangle
     // tiled, none, one or several columns per lane) to check every path.
     void setTiling(ComputeTiling tiling);
-    // Triangle groups the last static voxelization dispatched, and how many
-    // static groups the scene has (after a scroll, only those near the slabs).
-    uint32_t lastStaticGroups() const { return lastStaticGroups_; }
-    uint32_t staticGroups() const { return staticGroups_; }
 
 private:
     const gpu::Context& ctx_;
@@ -61,7 +60,7 @@ private:
     gpu::Buffer scrollGroups_;  // the static groups a scroll's slabs need (filled per scroll)
     std::vector<shader::VoxcGroup> staticGroupsHost_;
     std::vector<glm::uvec2> staticGroupChunks_;  // per static group: draw, chunk of SceneGpu::primitiveChunks
-    mutable uint32_t lastStaticGroups_ = 0;
+
     gpu::Buffer tiles_;     // shader::VoxcTile[VOXC_MAX_TILES]
     gpu::Buffer indirect_;  // the tile phase's dispatch
     uint32_t staticGroups_ = 0, dynamicGroups_ = 0;
