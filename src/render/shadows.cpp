@@ -137,34 +137,40 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
                         gpu::GpuTimers* timers) {
     gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
     const uint32_t viewCount = uint32_t(hostViews.size());
-    reused_ = statics == StaticShadows::Kept && keptMap_ == map.serial() && keptViews_.size() == hostViews.size() &&
-              std::equal(hostViews.begin(), hostViews.end(), keptViews_.begin(),
-                         [](const sh::GpuShadowView& a, const sh::GpuShadowView& b) {
-                             return std::memcmp(&a, &b, sizeof(a)) == 0;
-                         });
+    // A layer's static depth is reused where its view is the one it was
+    // rendered with (one light moving, or a focus that follows the camera,
+    // leaves the other layers alone).
+    std::vector<bool> stale(viewCount, true);
+    reusedLayers_ = 0;
+    if (statics == StaticShadows::Kept && keptMap_ == map.serial())
+        for (uint32_t v = 0; v < viewCount && v < keptViews_.size(); ++v) {
+            stale[v] = std::memcmp(&hostViews[v], &keptViews_[v], sizeof(sh::GpuShadowView)) != 0;
+            reusedLayers_ += !stale[v];
+        }
     // Nothing is kept across a frame without views (shadows off) or one that
     // keeps nothing: static geometry may move meanwhile.
     keptMap_ = 0;
     keptViews_.clear();
     if (viewCount == 0) return;
     if (statics == StaticShadows::Uncached) {
-        render(cmd, tracker, scene, views, viewCount, map, Draws::All, true);
+        render(cmd, tracker, scene, views, viewCount, map, Draws::All, true, nullptr);
         return;
     }
+    const bool anyStale = reusedLayers_ < viewCount;
     if (!hasDynamic_) {
-        if (!reused_) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true);
+        if (anyStale) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true, &stale);
     } else {
-        if (!reused_) {
+        if (anyStale) {
             if (!cache_.handle()) {
                 gpu::ImageDesc d = map.desc();
                 d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
                 d.name = "shadow map static cache";
                 cache_ = gpu::Image(ctx_, d);
             }
-            render(cmd, tracker, scene, views, viewCount, cache_, Draws::Static, true);
+            render(cmd, tracker, scene, views, viewCount, cache_, Draws::Static, true, &stale);
         }
         copyLayers(cmd, tracker, cache_, map, viewCount);
-        render(cmd, tracker, scene, views, viewCount, map, Draws::Dynamic, false);
+        render(cmd, tracker, scene, views, viewCount, map, Draws::Dynamic, false, nullptr);
     }
     keptViews_ = hostViews;
     keptMap_ = map.serial();
@@ -182,8 +188,10 @@ void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gp
 }
 
 void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear) const {
-    tracker.image(map, gpu::use::DepthAttachment, clear).flush(cmd);
+                        uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear,
+                        const std::vector<bool>* layers) const {
+    // Discarding the image's contents is right only when every layer is rendered again.
+    tracker.image(map, gpu::use::DepthAttachment, clear && !layers).flush(cmd);
     const uint32_t size = map.desc().extent.width;
     // Both pipelines share one layout, so descriptors pushed once serve both.
     gpu::bind(cmd, opaque_);
@@ -199,6 +207,7 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
 
     for (uint32_t v = 0; v < viewCount; ++v) {
+        if (layers && !(*layers)[v]) continue;
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = map.layerView(v);
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;

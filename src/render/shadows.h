@@ -71,13 +71,16 @@ public:
                 gpu::GpuTimers* timers);
     // Bytes of the kept static depth (0 when the map itself is kept).
     VkDeviceSize cacheBytes() const { return cache_.handle() ? cache_.memorySize() : 0; }
-    // Whether the last record() reused the static depth (tests).
-    bool reusedStatic() const { return reused_; }
+    // Layers whose static depth the last record() reused (tests).
+    uint32_t reusedLayers() const { return reusedLayers_; }
+    bool reusedStatic() const { return reusedLayers_ > 0 && reusedLayers_ == keptViews_.size(); }
 
 private:
     enum class Draws { All, Static, Dynamic };
+    // `layers`: only the views marked true (null: every view).
     void render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear) const;
+                uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear,
+                const std::vector<bool>* layers) const;
     void copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
                     uint32_t layers) const;
 
@@ -88,7 +91,7 @@ private:
     gpu::Image cache_;  // static draws' depth, when there are dynamic draws
     std::vector<shader::GpuShadowView> keptViews_;
     uint64_t keptMap_ = 0;  // serial of the map the kept depth belongs to (0: nothing kept)
-    bool reused_ = false;
+    uint32_t reusedLayers_ = 0;
 };
 
 }  // namespace dvsgi::render

@@ -149,5 +149,28 @@ TEST_F(GpuTest, ShadowMapsKeepStaticDepthAndMatchAFreshRenderer) {
     }
 }
 
+// With a sun and a point light, moving the point light renders its six views
+// again and reuses the sun's.
+TEST_F(GpuTest, ShadowMapsRenderAgainOnlyTheViewsThatChanged) {
+    for (bool withDynamic : {true, false}) {
+        Occluders o = occluders(withDynamic, true);
+        scene::Light sun;
+        sun.name = "sun";
+        sun.type = scene::LightType::Directional;
+        sun.intensity = 2.0f;
+        addLight(o.scene, sun, glm::vec3(0.0f, 5.0f, 0.0f), glm::normalize(glm::vec3(-0.6f, -1.0f, 0.2f)));
+        render::Renderer r(context(), o.scene, settings());
+        r.renderFrame();
+        r.scene().nodes[size_t(o.light)].translation.z += 0.3f;
+        r.sceneChanged();
+        r.renderFrame();
+        std::printf("%s: views reused %u\n", withDynamic ? "with a dynamic occluder" : "static only",
+                    r.shadows().reusedLayers());
+        EXPECT_EQ(r.shadows().reusedLayers(), 1u);  // the sun's one view
+        EXPECT_FALSE(r.shadows().reusedStatic());
+        EXPECT_LT(relativeDifference(direct(r), fresh(r.scene())), 1e-6);
+    }
+}
+
 }  // namespace
 }  // namespace dvsgi::test
