@@ -3,7 +3,8 @@
 the frames that compared pixels of the flicker figure's mean change and 99th percentile, for the
 indirect term and for its irradiance (before the albedo), and the median GPU ms of a frame
 (docs/benchmarks.md, "At 30 frames per second").
-Usage: scripts/flicker-medians.py BENCH.json..."""
+Usage: scripts/flicker-medians.py [--frames N] BENCH.json...
+--frames N: only the first N measured frames of each file (to compare runs of different lengths)."""
 import json
 import statistics
 import sys
@@ -17,9 +18,18 @@ def summary(values, digits):
 print("| file | term: mean change | term: 99th percentile | irradiance: mean change | "
       "irradiance: 99th percentile | GPU ms |")
 print("|---|---|---|---|---|---|")
-for path in sys.argv[1:]:
+args = sys.argv[1:]
+limit = None
+if args[:1] == ["--frames"]:
+    if len(args) < 2 or not args[1].isdigit() or int(args[1]) < 1:
+        sys.exit("flicker-medians.py: --frames needs a positive whole number")
+    limit = int(args[1])
+    args = args[2:]
+for path in args:
     with open(path) as f:
         frames = json.load(f)["measurements"][0]["per_frame"]
+    if limit is not None:
+        frames = frames[:limit]
     # A first frame without a warm-up has nothing to compare with.
     frames = [fr for fr in frames if "flicker" in fr and fr["flicker"]["compared_pixels"] > 0]
     if not frames:
