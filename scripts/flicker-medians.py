@@ -4,10 +4,11 @@ the frames that compared pixels of the flicker figure's mean change and 99th per
 indirect term and for its irradiance (before the albedo), and the median GPU ms of a frame
 (docs/benchmarks.md, "At 30 frames per second").
 Usage: scripts/flicker-medians.py [--frames N] BENCH.json...
---frames N: only the first N measured frames of each file (to compare runs of different lengths)."""
+--frames N: only the first N measured frames of each file (to compare runs of different lengths);
+a frame with nothing to compare among them is left out as always."""
+import argparse
 import json
 import statistics
-import sys
 
 
 def summary(values, digits):
@@ -15,21 +16,26 @@ def summary(values, digits):
     return f"{statistics.median(values):.{digits}f} % ({min(values):.{digits}f}–{max(values):.{digits}f})"
 
 
+def positive(text):
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError("must be at least 1")
+    return value
+
+
+parser = argparse.ArgumentParser(description="Flicker medians of dvsgi bench --camera-path JSONs.")
+parser.add_argument("--frames", type=positive, help="only the first N measured frames of each file")
+parser.add_argument("files", nargs="+", metavar="BENCH.json")
+args = parser.parse_args()
+
 print("| file | term: mean change | term: 99th percentile | irradiance: mean change | "
       "irradiance: 99th percentile | GPU ms |")
 print("|---|---|---|---|---|---|")
-args = sys.argv[1:]
-limit = None
-if args[:1] == ["--frames"]:
-    if len(args) < 2 or not args[1].isdigit() or int(args[1]) < 1:
-        sys.exit("flicker-medians.py: --frames needs a positive whole number")
-    limit = int(args[1])
-    args = args[2:]
-for path in args:
+for path in args.files:
     with open(path) as f:
         frames = json.load(f)["measurements"][0]["per_frame"]
-    if limit is not None:
-        frames = frames[:limit]
+    if args.frames is not None:
+        frames = frames[:args.frames]
     # A first frame without a warm-up has nothing to compare with.
     frames = [fr for fr in frames if "flicker" in fr and fr["flicker"]["compared_pixels"] > 0]
     if not frames:

@@ -157,8 +157,10 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         return;
     }
     const bool anyStale = reusedLayers_ < viewCount;
+    // Every layer stale: render them all, and the image's old contents may go.
+    const std::vector<bool>* layers = reusedLayers_ > 0 ? &stale : nullptr;
     if (!hasDynamic_) {
-        if (anyStale) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true, &stale);
+        if (anyStale) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true, layers);
     } else {
         if (anyStale) {
             if (!cache_.handle()) {
@@ -167,7 +169,7 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
                 d.name = "shadow map static cache";
                 cache_ = gpu::Image(ctx_, d);
             }
-            render(cmd, tracker, scene, views, viewCount, cache_, Draws::Static, true, &stale);
+            render(cmd, tracker, scene, views, viewCount, cache_, Draws::Static, true, layers);
         }
         copyLayers(cmd, tracker, cache_, map, viewCount);
         render(cmd, tracker, scene, views, viewCount, map, Draws::Dynamic, false, nullptr);

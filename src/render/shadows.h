@@ -49,13 +49,13 @@ float shadowFocusRadius(const scene::Bounds& bounds, float halfSide);
 LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scene::Bounds& bounds,
                        uint32_t shadowMapSize, bool shadows, const ShadowFocus& focus = {});
 
-// Static geometry's depth is kept between frames: it is rendered again only
-// when the views (lights, bounds, a focus that moved) or the static geometry
-// changed. With dynamic draws in the scene a copy of it (`cache`) is restored
+// Static geometry's depth is kept between frames: a view is rendered again
+// only when it (its light, the bounds, a focus that moved) or the static
+// geometry changed. With dynamic draws in the scene a copy of it (`cache`) is restored
 // into the map each frame and only the dynamic draws are rendered over it;
 // without, the map itself is kept.
 enum class StaticShadows {
-    Kept,      // static geometry as last frame: its depth is reused while the views are unchanged
+    Kept,      // static geometry as last frame: each view's depth is reused while that view is unchanged
     Changed,   // static geometry moved: render it again and keep it
     Uncached,  // render every draw into the map and keep nothing (a frame that stands for an
                // everything-dynamic one: the bench's, after Renderer::revoxelizeStatic)
