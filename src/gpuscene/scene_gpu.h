@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "gpu/texture_table.h"
 #include "scene/scene.h"
@@ -51,5 +52,16 @@ public:
 private:
     std::vector<DrawRange> primitiveRanges_;  // per scene primitive
 };
+
+// Which draws a pass rasterizes.
+enum class DrawFilter { All, Static, Dynamic };
+
+// Records the draws `filter` picks: opaque materials with `opaque` first, then
+// MASK/BLEND ones with `alphaTested`, so opaque depth is down before any
+// cut-out is shaded and opaque fragments can be depth-tested before shading.
+// Both pipelines share one layout (descriptors already pushed, geometry
+// bound); each draw pushes shader::DrawPush {draw index, `view`}.
+void drawOpaqueThenAlphaTested(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Pipeline& opaque,
+                               const gpu::Pipeline& alphaTested, uint32_t view, DrawFilter filter = DrawFilter::All);
 
 }  // namespace dvsgi::gpuscene

@@ -91,19 +91,7 @@ void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Scene
     const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
-    // Opaque draws first, with a shader that cannot discard, so the depth test
-    // runs before shading and hidden fragments cost no texture fetches; the
-    // cut-outs after, tested against that depth.
-    for (bool alpha : {false, true}) {
-        gpu::bind(cmd, alpha ? alphaTested_ : opaque_);
-        for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-            const gpuscene::DrawRange& r = scene.ranges[i];
-            if (r.alphaTested != alpha) continue;
-            const sh::DrawPush push{glm::uvec4(i, 0, 0, 0)};
-            gpu::pushConstants(cmd, opaque_, VK_SHADER_STAGE_VERTEX_BIT, push);
-            vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
-        }
-    }
+    gpuscene::drawOpaqueThenAlphaTested(cmd, scene, opaque_, alphaTested_, 0);
     vkCmdEndRendering(cmd);
 }
 

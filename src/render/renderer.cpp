@@ -288,10 +288,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
         list_->finish(cmd, tracker_, *volumes_, false);
         list_->copyHeader(cmd, tracker_, *volumes_, *listHeader_);
     }
-    if (!pv_) {
-        shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, targets_->shadowMap, staticShadows(), t);
-        shadowsStale_ = false;
-    }
+    if (!pv_) recordShadows(cmd);
     if (!voxelizer_) return;
     const vxgi::ShadowInputs shadows{*lights_, lightCount_, *views_, targets_->shadowMap, samplers_->shadow.handle(),
                                      settings_.shadows};
@@ -325,9 +322,11 @@ void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     list_->finish(cmd, tracker_, *volumes_, true);
 }
 
-StaticShadows Renderer::staticShadows() const {
-    if (shadowsStale_) return StaticShadows::Uncached;
-    return staticDirty_ ? StaticShadows::Changed : StaticShadows::Kept;
+void Renderer::recordShadows(VkCommandBuffer cmd) {
+    const StaticShadows statics =
+        shadowsStale_ ? StaticShadows::Uncached : (staticDirty_ ? StaticShadows::Changed : StaticShadows::Kept);
+    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, targets_->shadowMap, statics, timers_.get());
+    shadowsStale_ = false;
 }
 
 std::vector<gpu::TimerResult> Renderer::revoxelizeStatic() {

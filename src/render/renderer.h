@@ -86,7 +86,6 @@ struct MemoryItem {
 };
 
 class ShadowPass;
-enum class StaticShadows;
 class GBufferPass;
 class LightingPass;
 class CompositePass;
@@ -177,6 +176,8 @@ private:
     void setPvViews(std::vector<PvView>& views, const std::vector<glm::mat4>& viewProj, uint32_t size);
     void recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
     void injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer);
+    // Shadow maps, told what static depth they may reuse (StaticShadows).
+    void recordShadows(VkCommandBuffer cmd);
     void recordBounce(VkCommandBuffer cmd, bool withStats);
     void recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::VoxelVolumes& v, const vxgi::ClipTrace* trace,
                            bool withStats, bool blend = false);
@@ -268,7 +269,6 @@ private:
     uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
     std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
-    StaticShadows staticShadows() const;  // what the shadow pass may reuse this frame
     bool shadowsStale_ = false;  // the next frame's shadows: StaticShadows::Uncached (after revoxelizeStatic)
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance

@@ -107,8 +107,7 @@ void Renderer::injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& vie
 void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     FrameTargets& f = *targets_;
-    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, f.shadowMap, staticShadows(), t);
-    shadowsStale_ = false;
+    recordShadows(cmd);
     gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
     recordPvViews(cmd, rsm_, "pv rsm");
     recordPvViews(cmd, around_, "pv views");

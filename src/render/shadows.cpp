@@ -153,14 +153,14 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     keptViews_.clear();
     if (viewCount == 0) return;
     if (statics == StaticShadows::Uncached) {
-        render(cmd, tracker, scene, views, viewCount, map, Draws::All, true, nullptr);
+        render(cmd, tracker, scene, views, viewCount, map, gpuscene::DrawFilter::All, true, nullptr);
         return;
     }
     const bool anyStale = reusedLayers_ < viewCount;
     // Every layer stale: render them all, and the image's old contents may go.
     const std::vector<bool>* layers = reusedLayers_ > 0 ? &stale : nullptr;
     if (!hasDynamic_) {
-        if (anyStale) render(cmd, tracker, scene, views, viewCount, map, Draws::All, true, layers);
+        if (anyStale) render(cmd, tracker, scene, views, viewCount, map, gpuscene::DrawFilter::All, true, layers);
     } else {
         if (anyStale) {
             if (!cache_.handle()) {
@@ -169,10 +169,10 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
                 d.name = "shadow map static cache";
                 cache_ = gpu::Image(ctx_, d);
             }
-            render(cmd, tracker, scene, views, viewCount, cache_, Draws::Static, true, layers);
+            render(cmd, tracker, scene, views, viewCount, cache_, gpuscene::DrawFilter::Static, true, layers);
         }
         copyLayers(cmd, tracker, cache_, map, viewCount);
-        render(cmd, tracker, scene, views, viewCount, map, Draws::Dynamic, false, nullptr);
+        render(cmd, tracker, scene, views, viewCount, map, gpuscene::DrawFilter::Dynamic, false, nullptr);
     }
     keptViews_ = hostViews;
     keptMap_ = map.serial();
@@ -190,7 +190,7 @@ void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gp
 }
 
 void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear,
+                        uint32_t viewCount, const gpu::Image& map, gpuscene::DrawFilter draws, bool clear,
                         const std::vector<bool>* layers) const {
     // Discarding the image's contents is right only when every layer is rendered again.
     tracker.image(map, gpu::use::DepthAttachment, clear && !layers).flush(cmd);
@@ -223,17 +223,7 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         vkCmdBeginRendering(cmd, &ri);
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
-        for (bool alpha : {false, true}) {
-            gpu::bind(cmd, alpha ? alphaTested_ : opaque_);
-            for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-                const gpuscene::DrawRange& r = scene.ranges[i];
-                if (r.alphaTested != alpha) continue;
-                if ((draws == Draws::Static && r.dynamic) || (draws == Draws::Dynamic && !r.dynamic)) continue;
-                const sh::DrawPush push{glm::uvec4(i, v, 0, 0)};
-                gpu::pushConstants(cmd, opaque_, VK_SHADER_STAGE_VERTEX_BIT, push);
-                vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
-            }
-        }
+        gpuscene::drawOpaqueThenAlphaTested(cmd, scene, opaque_, alphaTested_, v, draws);
         vkCmdEndRendering(cmd);
     }
 }

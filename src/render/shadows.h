@@ -20,6 +20,7 @@ class Tracker;
 
 namespace dvsgi::gpuscene {
 class SceneGpu;
+enum class DrawFilter;
 }
 
 namespace dvsgi::render {
@@ -76,10 +77,9 @@ public:
     bool reusedStatic() const { return reusedLayers_ > 0 && reusedLayers_ == keptViews_.size(); }
 
 private:
-    enum class Draws { All, Static, Dynamic };
     // `layers`: only the views marked true (null: every view).
     void render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                uint32_t viewCount, const gpu::Image& map, Draws draws, bool clear,
+                uint32_t viewCount, const gpu::Image& map, gpuscene::DrawFilter draws, bool clear,
                 const std::vector<bool>* layers) const;
     void copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
                     uint32_t layers) const;

@@ -29,19 +29,15 @@ const uint32_t kComp[] = {
 // A group's triangles are one chunk of SceneGpu::primitiveChunks.
 static_assert(gpuscene::SceneGpu::kBoundsChunk == sh::VOXC_GROUP);
 
-// Groups of up to VOXC_GROUP consecutive triangles, never two draws in one;
-// `chunks` gets each group's draw and chunk.
-void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out,
-                  std::vector<glm::uvec2>* chunks = nullptr) {
+// Groups of up to VOXC_GROUP consecutive triangles, never two draws in one.
+void appendGroups(const gpuscene::SceneGpu& scene, bool dynamic, std::vector<sh::VoxcGroup>& out) {
     for (uint32_t d = 0; d < scene.ranges.size(); ++d) {
         const gpuscene::DrawRange& r = scene.ranges[d];
         if (r.dynamic != dynamic) continue;
         const uint32_t triangles = r.indexCount / 3;
-        for (uint32_t first = 0; first < triangles; first += sh::VOXC_GROUP) {
+        for (uint32_t first = 0; first < triangles; first += sh::VOXC_GROUP)
             out.push_back({glm::uvec4(d, r.firstIndex + 3 * first, std::bit_cast<uint32_t>(r.vertexOffset),
                                       std::min(sh::VOXC_GROUP, triangles - first))});
-            if (chunks) chunks->push_back(glm::uvec2(d, first / sh::VOXC_GROUP));
-        }
     }
 }
 
@@ -122,7 +118,7 @@ ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::Scen
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxelize (compute)");
 
     std::vector<sh::VoxcGroup> groups;
-    appendGroups(scene, false, groups, &staticGroupChunks_);
+    appendGroups(scene, false, groups);
     staticGroups_ = uint32_t(groups.size());
     staticGroupsHost_ = groups;
     appendGroups(scene, true, groups);
@@ -157,12 +153,12 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         // triangle would load itself to find that out, so groups far from the
         // slabs are left out here (their bounds from the scene's host copy).
         std::vector<sh::VoxcGroup> selected;
-        for (uint32_t g = 0; g < staticGroups_; ++g) {
-            const glm::uvec2 dc = staticGroupChunks_[g];
+        for (const sh::VoxcGroup& g : staticGroupsHost_) {
+            // The group's draw, and its chunk: its first triangle within the draw over VOXC_GROUP.
+            const uint32_t d = g.draw.x, chunk = (g.draw.y - scene.ranges.at(d).firstIndex) / (3 * sh::VOXC_GROUP);
             glm::vec3 lo, hi;
-            chunkWorldBounds(scene.primitiveChunks.at(scene.drawPrimitive.at(dc.x)).at(dc.y), scene.drawWorld.at(dc.x),
-                             lo, hi);
-            if (groupReachesWrittenVoxels(lo, hi, v.grid, v.keptByScroll)) selected.push_back(staticGroupsHost_[g]);
+            chunkWorldBounds(scene.primitiveChunks.at(scene.drawPrimitive.at(d)).at(chunk), scene.drawWorld.at(d), lo, hi);
+            if (groupReachesWrittenVoxels(lo, hi, v.grid, v.keptByScroll)) selected.push_back(g);
         }
         first = 0;
         count = uint32_t(selected.size());

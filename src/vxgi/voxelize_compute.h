@@ -58,8 +58,7 @@ private:
     gpu::Pipeline pipeline_;
     gpu::Buffer groups_;    // shader::VoxcGroup: the static draws' groups, then the dynamic ones'
     gpu::Buffer scrollGroups_;  // the static groups a scroll's slabs need (filled per scroll)
-    std::vector<shader::VoxcGroup> staticGroupsHost_;
-    std::vector<glm::uvec2> staticGroupChunks_;  // per static group: draw, chunk of SceneGpu::primitiveChunks
+    std::vector<shader::VoxcGroup> staticGroupsHost_;  // the static groups, for the scroll's host-side culling
 
     gpu::Buffer tiles_;     // shader::VoxcTile[VOXC_MAX_TILES]
     gpu::Buffer indirect_;  // the tile phase's dispatch
