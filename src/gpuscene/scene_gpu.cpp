@@ -148,19 +148,4 @@ void SceneGpu::updateDraws(const gpu::Context& ctx, const scene::Scene& scene,
     for (size_t i = 0; i < items.size(); ++i) drawWorld[i] = items[i].world;
 }
 
-void drawOpaqueThenAlphaTested(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Pipeline& opaque,
-                               const gpu::Pipeline& alphaTested, uint32_t view, DrawFilter filter) {
-    for (bool alpha : {false, true}) {
-        gpu::bind(cmd, alpha ? alphaTested : opaque);
-        for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-            const DrawRange& r = scene.ranges[i];
-            if (r.alphaTested != alpha) continue;
-            if ((filter == DrawFilter::Static && r.dynamic) || (filter == DrawFilter::Dynamic && !r.dynamic)) continue;
-            const sh::DrawPush push{glm::uvec4(i, view, 0, 0)};
-            gpu::pushConstants(cmd, opaque, VK_SHADER_STAGE_VERTEX_BIT, push);
-            vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
-        }
-    }
-}
-
 }  // namespace dvsgi::gpuscene

@@ -40,8 +40,8 @@ public:
     scene::Bounds bounds;
     uint64_t triangleCount = 0;
 
-    // Host copies for culling on the CPU (the compute voxelizer after a
-    // clipmap scroll): each primitive's bounds, local, per run of
+    // Host copies for culling on the CPU (draw lists per view, the compute
+    // voxelizer after a clipmap scroll): each primitive's bounds, local, per run of
     // kBoundsChunk consecutive triangles, and each draw's primitive and world
     // matrix (updateDraws keeps them current).
     static constexpr uint32_t kBoundsChunk = 64;
@@ -52,16 +52,5 @@ public:
 private:
     std::vector<DrawRange> primitiveRanges_;  // per scene primitive
 };
-
-// Which draws a pass rasterizes.
-enum class DrawFilter { All, Static, Dynamic };
-
-// Records the draws `filter` picks: opaque materials with `opaque` first, then
-// MASK/BLEND ones with `alphaTested`, so opaque depth is down before any
-// cut-out is shaded and opaque fragments can be depth-tested before shading.
-// Both pipelines share one layout (descriptors already pushed, geometry
-// bound); each draw pushes shader::DrawPush {draw index, `view`}.
-void drawOpaqueThenAlphaTested(VkCommandBuffer cmd, const SceneGpu& scene, const gpu::Pipeline& opaque,
-                               const gpu::Pipeline& alphaTested, uint32_t view, DrawFilter filter = DrawFilter::All);
 
 }  // namespace dvsgi::gpuscene

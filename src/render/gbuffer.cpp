@@ -3,6 +3,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
+#include "gpuscene/draw_list.h"
 #include "gpuscene/scene_gpu.h"
 #include "shared/geometry_pass.h"
 
@@ -48,8 +49,9 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(
     alphaTested_ = gpu::Pipeline(ctx, g, layout, "gbuffer alpha-tested");
 }
 
-void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& frame,
-                         const GBuffer& out, gpu::GpuTimers* timers) const {
+void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene,
+                         const gpuscene::DrawList& draws, const gpu::Buffer& frame, const GBuffer& out,
+                         gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "gbuffer");
     const gpu::Image* colors[3] = {&out.base, &out.normal, &out.emission};
     for (const gpu::Image* c : colors) tracker.image(*c, gpu::use::ColorAttachment, true);
@@ -91,7 +93,7 @@ void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Scene
     const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
-    gpuscene::drawOpaqueThenAlphaTested(cmd, scene, opaque_, alphaTested_, 0);
+    gpuscene::recordDraws(cmd, draws, opaque_, alphaTested_, 0);
     vkCmdEndRendering(cmd);
 }
 

@@ -13,6 +13,7 @@ class Tracker;
 
 namespace dvsgi::gpuscene {
 class SceneGpu;
+struct DrawList;
 }
 
 namespace dvsgi::render {
@@ -27,9 +28,10 @@ gpu::Spirv gbufferFragmentShader(bool alphaTested);
 class GBufferPass {
 public:
     GBufferPass(const gpu::Context& ctx, const SceneGpu& scene);
-    // Rasterizes the scene into `out` (FrameTargets::gbuffer), all of it.
-    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& frame,
-                const GBuffer& out, gpu::GpuTimers* timers) const;
+    // Rasterizes `draws` of the scene into `out` (FrameTargets::gbuffer) as
+    // seen by `frame` (gpuscene::visibleDraws with the same view, nearest first).
+    void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpuscene::DrawList& draws,
+                const gpu::Buffer& frame, const GBuffer& out, gpu::GpuTimers* timers) const;
 
 private:
     const gpu::Context& ctx_;

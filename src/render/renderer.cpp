@@ -10,6 +10,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/transfer.h"
+#include "gpuscene/draw_list.h"
 #include "render/composite.h"
 #include "render/emitters.h"
 #include "render/gbuffer.h"
@@ -224,6 +225,11 @@ glm::mat4 Renderer::viewProjection() const {
     return projectionMatrix(camera_, iw, ih) * viewMatrix(camera_);
 }
 
+void Renderer::recordCameraGBuffer(VkCommandBuffer cmd) {
+    const gpuscene::DrawList draws = gpuscene::visibleDraws(*sceneGpu_, viewProjection(), gpuscene::DrawFilter::All);
+    gbuffer_->record(cmd, tracker_, *sceneGpu_, draws, *frame_, targets_->gbuffer, timers_.get());
+}
+
 void Renderer::updateFrameConstants() {
     const uint32_t iw = settings_.width * settings_.supersample, ih = settings_.height * settings_.supersample;
     sh::FrameConstants f{};
@@ -351,7 +357,7 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
         voxelView_->record(cmd, tracker_, *volumes_, *frame_, f.output, settings_.view, t);
         return;
     }
-    if (!pv_) gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);  // pv: before the voxels
+    if (!pv_) recordCameraGBuffer(cmd);  // pv: before the voxels
     const std::optional<vxgi::ClipTrace> trace =
         clip_.empty() ? std::nullopt
                       : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});

@@ -166,6 +166,7 @@ private:
     struct PvView {
         GBuffer gbuffer;
         std::unique_ptr<gpu::Buffer> frame;
+        glm::mat4 viewProj{1.0f};  // as in `frame`, for culling the draws
     };
     void updateFrameConstants();
     void uploadLights();
@@ -204,6 +205,7 @@ private:
     void recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const;
     void recordTemporal(VkCommandBuffer cmd);
     glm::mat4 viewProjection() const;  // of the internal image (output x supersample)
+    void recordCameraGBuffer(VkCommandBuffer cmd);
     uint32_t lightSettleFrames() const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics

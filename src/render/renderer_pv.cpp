@@ -9,6 +9,7 @@
 
 #include "gpu/context.h"
 #include "gpu/transfer.h"
+#include "gpuscene/draw_list.h"
 #include "render/gbuffer.h"
 #include "render/shadows.h"
 #include "shared/pv_pass.h"
@@ -78,6 +79,7 @@ void Renderer::setPvViews(std::vector<PvView>& views, const std::vector<glm::mat
     for (size_t i = 0; i < viewProj.size(); ++i) {
         sh::FrameConstants f{};
         f.viewProj = viewProj[i];
+        views[i].viewProj = f.viewProj;
         f.invViewProj = glm::inverse(f.viewProj);
         f.sizes = glm::uvec4(size, size, 0u, 0u);
         gpu::uploadBuffer(ctx_, *views[i].frame, &f, sizeof(f));
@@ -87,7 +89,9 @@ void Renderer::setPvViews(std::vector<PvView>& views, const std::vector<glm::mat
 void Renderer::recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer) {
     if (views.empty()) return;
     gpu::GpuTimerScope scope(timers_.get(), cmd, timer);
-    for (const PvView& v : views) gbuffer_->record(cmd, tracker_, *sceneGpu_, *v.frame, v.gbuffer, nullptr);
+    for (const PvView& v : views)
+        gbuffer_->record(cmd, tracker_, *sceneGpu_, gpuscene::visibleDraws(*sceneGpu_, v.viewProj, gpuscene::DrawFilter::All),
+                         *v.frame, v.gbuffer, nullptr);
 }
 
 void Renderer::injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer) {
@@ -108,7 +112,7 @@ void Renderer::recordProgressiveVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
     FrameTargets& f = *targets_;
     recordShadows(cmd);
-    gbuffer_->record(cmd, tracker_, *sceneGpu_, *frame_, f.gbuffer, t);
+    recordCameraGBuffer(cmd);
     recordPvViews(cmd, rsm_, "pv rsm");
     recordPvViews(cmd, around_, "pv views");
     const vxgi::PvDepthInputs depth{f.gbuffer.depth, f.shadowMap, *pvViews_, pvViewCount_, samplers_->point.handle()};

@@ -9,6 +9,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
+#include "gpuscene/draw_list.h"
 #include "gpuscene/scene_gpu.h"
 #include "shared/geometry_pass.h"
 #include "shared/scene_data.h"
@@ -153,14 +154,14 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     keptViews_.clear();
     if (viewCount == 0) return;
     if (statics == StaticShadows::Uncached) {
-        render(cmd, tracker, scene, views, viewCount, map, gpuscene::DrawFilter::All, true, nullptr);
+        render(cmd, tracker, scene, views, hostViews, map, gpuscene::DrawFilter::All, true, nullptr);
         return;
     }
     const bool anyStale = reusedLayers_ < viewCount;
     // Every layer stale: render them all, and the image's old contents may go.
     const std::vector<bool>* layers = reusedLayers_ > 0 ? &stale : nullptr;
     if (!hasDynamic_) {
-        if (anyStale) render(cmd, tracker, scene, views, viewCount, map, gpuscene::DrawFilter::All, true, layers);
+        if (anyStale) render(cmd, tracker, scene, views, hostViews, map, gpuscene::DrawFilter::All, true, layers);
     } else {
         if (anyStale) {
             if (!cache_.handle()) {
@@ -169,10 +170,10 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
                 d.name = "shadow map static cache";
                 cache_ = gpu::Image(ctx_, d);
             }
-            render(cmd, tracker, scene, views, viewCount, cache_, gpuscene::DrawFilter::Static, true, layers);
+            render(cmd, tracker, scene, views, hostViews, cache_, gpuscene::DrawFilter::Static, true, layers);
         }
         copyLayers(cmd, tracker, cache_, map, viewCount);
-        render(cmd, tracker, scene, views, viewCount, map, gpuscene::DrawFilter::Dynamic, false, nullptr);
+        render(cmd, tracker, scene, views, hostViews, map, gpuscene::DrawFilter::Dynamic, false, nullptr);
     }
     keptViews_ = hostViews;
     keptMap_ = map.serial();
@@ -190,7 +191,7 @@ void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gp
 }
 
 void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        uint32_t viewCount, const gpu::Image& map, gpuscene::DrawFilter draws, bool clear,
+                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map, gpuscene::DrawFilter draws, bool clear,
                         const std::vector<bool>* layers) const {
     // Discarding the image's contents is right only when every layer is rendered again.
     tracker.image(map, gpu::use::DepthAttachment, clear && !layers).flush(cmd);
@@ -208,7 +209,7 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     // Slope-scaled bias handles grazing angles; the normal offset at lookup does the rest.
     vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
 
-    for (uint32_t v = 0; v < viewCount; ++v) {
+    for (uint32_t v = 0; v < hostViews.size(); ++v) {
         if (layers && !(*layers)[v]) continue;
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         depth.imageView = map.layerView(v);
@@ -223,7 +224,8 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         vkCmdBeginRendering(cmd, &ri);
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
-        gpuscene::drawOpaqueThenAlphaTested(cmd, scene, opaque_, alphaTested_, v, draws);
+        // Each view rasterizes only what reaches it: a point light's face sees a sixth of the scene.
+        gpuscene::recordDraws(cmd, gpuscene::visibleDraws(scene, hostViews[v].viewProj, draws), opaque_, alphaTested_, v);
         vkCmdEndRendering(cmd);
     }
 }
