@@ -50,7 +50,7 @@ uint32_t mipCount(uint32_t w, uint32_t h) {
 
 }  // namespace
 
-SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
+SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene, float maxAnisotropy) {
     std::vector<scene::Vertex> allVertices;
     std::vector<uint32_t> allIndices;
     for (const scene::Primitive& p : scene.primitives) {
@@ -105,7 +105,7 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene) {
     gpu::uploadImage(ctx, fallbackTexture, white, 4, gpu::use::ShaderRead);
 
     gpu::SamplerDesc sd;
-    sd.maxAnisotropy = 8.0f;
+    sd.maxAnisotropy = maxAnisotropy;
     sampler = gpu::Sampler(ctx, sd);
     textureTable = std::make_unique<gpu::TextureTable>(
         ctx, sh::MAX_TEXTURES, sh::BIND_TEXTURES,

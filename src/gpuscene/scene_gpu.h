@@ -22,7 +22,8 @@ struct DrawRange {
 
 class SceneGpu {
 public:
-    SceneGpu(const gpu::Context& ctx, const scene::Scene& scene);
+    // `maxAnisotropy`: the textures' sampler's (1: none; the device caps it).
+    SceneGpu(const gpu::Context& ctx, const scene::Scene& scene, float maxAnisotropy);
 
     // Binds what every pass that rasterizes the scene needs: the texture table
     // (set 1 of `layout`), the vertex and the index buffer.

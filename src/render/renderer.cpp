@@ -86,7 +86,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
                                  std::to_string(maxDim) + " pixels per side");
     // Textures larger than the device allows are box-filtered down (with a warning).
     scene::limitTextureSize(scene_, maxDim, &warnings_);
-    sceneGpu_ = std::make_unique<gpuscene::SceneGpu>(ctx, scene);
+    sceneGpu_ = std::make_unique<gpuscene::SceneGpu>(ctx, scene, float(settings_.textureAnisotropy));
     // With a clipmap the camera walks through a scene that may be far larger
     // than level 0: directional shadows get a view of their own over level 0's
     // window (a square as wide as the window around the camera), so the finest
@@ -549,6 +549,7 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
            a.hardwareConservative != b.hardwareConservative || a.voxelizer != b.voxelizer || a.pv.rsm != b.pv.rsm || a.pv.views != b.pv.views ||
            a.gather.traceScale != b.gather.traceScale || a.clipmap.levels != b.clipmap.levels ||
            a.clipmap.voxelSize != b.clipmap.voxelSize || a.shadowFocus != b.shadowFocus ||
+           a.textureAnisotropy != b.textureAnisotropy ||
            a.emitterLights != b.emitterLights || a.emitterPatches != b.emitterPatches ||
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
 }

@@ -79,7 +79,7 @@ TEST_F(GpuTest, DrawCullingKeepsEveryTriangleThatReachesTheClipVolume) {
     const int moving = addMeshNode(s, scatteredQuads(rng, 40), mat, glm::vec3(2.0f, -1.0f, 0.5f),
                                    glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 2, 3))), glm::vec3(0.8f, 1.3f, 1.0f));
     s.nodes[size_t(moving)].dynamic = true;
-    const gpuscene::SceneGpu gpu(context(), s);
+    const gpuscene::SceneGpu gpu(context(), s, 1.0f);
     ASSERT_EQ(gpu.ranges.size(), 2u);
 
     std::uniform_real_distribution<float> pos(-14.0f, 14.0f), fov(0.3f, 2.2f), extent(2.0f, 12.0f);
@@ -193,7 +193,7 @@ TEST_F(GpuTest, DrawCullingLeavesTheLitFrameUnchanged) {
     for (bool uncullable : {false, true}) {
         const scene::Scene s = floorScene(uncullable);
         render::Renderer r(context(), s, rs);
-        const gpuscene::SceneGpu gpu(context(), s);
+        const gpuscene::SceneGpu gpu(context(), s, 1.0f);
         const glm::mat4 viewProj = render::projectionMatrix(r.camera(), rs.width, rs.height) * render::viewMatrix(r.camera());
         const uint64_t kept = gpuscene::visibleDraws(gpu, viewProj, gpuscene::DrawFilter::All).triangles();
         if (uncullable)
