@@ -19,8 +19,10 @@ bool picked(const DrawRange& r, DrawFilter filter) {
 // Whether the box's eight clip-space corners all lie outside one plane of the
 // clip volume. The planes are linear in homogeneous coordinates, so then the
 // whole box, and every triangle in it, does too, corners behind the eye
-// included. The margin covers the rounding between this product and the
-// vertex shader's (view-projection times model times position).
+// included. The margin, 1e-4 of w, absorbs the rounding between this
+// product and the vertex shader's (view-projection times model times
+// position): a triangle it could misjudge lies within 1e-4 of the view's
+// half-width of a clip plane, far inside any pixel at the image sizes used.
 bool outsideClipVolume(const glm::vec4 (&c)[8]) {
     uint32_t all = 0x3f;
     for (const glm::vec4& p : c) {
@@ -40,16 +42,6 @@ uint64_t DrawList::triangles() const {
     for (const std::vector<DrawRun>* runs : {&opaque, &alphaTested})
         for (const DrawRun& r : *runs) n += r.indexCount / 3;
     return n;
-}
-
-DrawList everyDraw(const SceneGpu& scene, DrawFilter filter) {
-    DrawList list;
-    for (uint32_t i = 0; i < scene.ranges.size(); ++i) {
-        const DrawRange& r = scene.ranges[i];
-        if (!picked(r, filter)) continue;
-        (r.alphaTested ? list.alphaTested : list.opaque).push_back({i, r.firstIndex, r.indexCount, r.vertexOffset});
-    }
-    return list;
 }
 
 DrawList visibleDraws(const SceneGpu& scene, const glm::mat4& viewProj, DrawFilter filter) {

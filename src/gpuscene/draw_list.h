@@ -38,9 +38,6 @@ struct DrawList {
 // a draw seen whole stays a few dozen draws, not one per chunk.
 constexpr uint32_t kRunChunks = 16;
 
-// Every draw `filter` picks, whole, in scene order.
-DrawList everyDraw(const SceneGpu& scene, DrawFilter filter);
-
 // The chunks (SceneGpu::kBoundsChunk triangles) of the draws `filter` picks
 // whose world bounds reach the clip volume of `viewProj` (Vulkan's, depth
 // 0..1, no depth clamp), so every triangle left out is one the rasterizer

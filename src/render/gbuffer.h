@@ -29,7 +29,7 @@ class GBufferPass {
 public:
     GBufferPass(const gpu::Context& ctx, const SceneGpu& scene);
     // Rasterizes `draws` of the scene into `out` (FrameTargets::gbuffer) as
-    // seen by `frame` (gpuscene::visibleDraws with the same view, nearest first).
+    // seen by `frame` (gpuscene::visibleDraws culled with the same view).
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpuscene::DrawList& draws,
                 const gpu::Buffer& frame, const GBuffer& out, gpu::GpuTimers* timers) const;
 

@@ -89,9 +89,10 @@ void Renderer::setPvViews(std::vector<PvView>& views, const std::vector<glm::mat
 void Renderer::recordPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer) {
     if (views.empty()) return;
     gpu::GpuTimerScope scope(timers_.get(), cmd, timer);
-    for (const PvView& v : views)
-        gbuffer_->record(cmd, tracker_, *sceneGpu_, gpuscene::visibleDraws(*sceneGpu_, v.viewProj, gpuscene::DrawFilter::All),
-                         *v.frame, v.gbuffer, nullptr);
+    for (const PvView& v : views) {
+        const gpuscene::DrawList draws = gpuscene::visibleDraws(*sceneGpu_, v.viewProj, gpuscene::DrawFilter::All);
+        gbuffer_->record(cmd, tracker_, *sceneGpu_, draws, *v.frame, v.gbuffer, nullptr);
+    }
 }
 
 void Renderer::injectPvViews(VkCommandBuffer cmd, const std::vector<PvView>& views, const char* timer) {

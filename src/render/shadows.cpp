@@ -191,8 +191,8 @@ void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gp
 }
 
 void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map, gpuscene::DrawFilter draws, bool clear,
-                        const std::vector<bool>* layers) const {
+                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map,
+                        gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers) const {
     // Discarding the image's contents is right only when every layer is rendered again.
     tracker.image(map, gpu::use::DepthAttachment, clear && !layers).flush(cmd);
     const uint32_t size = map.desc().extent.width;
@@ -224,8 +224,9 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         vkCmdBeginRendering(cmd, &ri);
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
-        // Each view rasterizes only what reaches it: a point light's face sees a sixth of the scene.
-        gpuscene::recordDraws(cmd, gpuscene::visibleDraws(scene, hostViews[v].viewProj, draws), opaque_, alphaTested_, v);
+        // Each view rasterizes only what reaches its frustum (a point light's face: 90 degrees of it).
+        const gpuscene::DrawList list = gpuscene::visibleDraws(scene, hostViews[v].viewProj, draws);
+        gpuscene::recordDraws(cmd, list, opaque_, alphaTested_, v);
         vkCmdEndRendering(cmd);
     }
 }

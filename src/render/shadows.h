@@ -79,8 +79,8 @@ public:
 private:
     // `layers`: only the views marked true (null: every view).
     void render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map, gpuscene::DrawFilter draws, bool clear,
-                const std::vector<bool>* layers) const;
+                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map,
+                gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers) const;
     void copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
                     uint32_t layers) const;
 

@@ -73,7 +73,7 @@ CoverageReport runCoverage(const scene::Scene& s, const std::vector<vxgi::GridSp
                           << " lacks VK_EXT_conservative_rasterization"; }();
         return {};
     }
-    gpuscene::SceneGpu sceneGpu(context(), s, 1.0f);
+    gpuscene::SceneGpu sceneGpu(context(), s, float(render::RenderSettings{}.textureAnisotropy));
     vxgi::Voxelizer voxelizer(context(), sceneGpu, hardware, kind);
     CoverageReport total;
     size_t triangles = 0;

@@ -26,7 +26,7 @@ std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind
 }
 
 VoxelRig::VoxelRig(const scene::Scene& scene, const vxgi::GridSpec& grid, vxgi::VoxelizerKind kind, uint32_t slots)
-    : sceneGpu(context(), scene, 1.0f),
+    : sceneGpu(context(), scene, float(render::RenderSettings{}.textureAnisotropy)),
       voxelizer(context(), sceneGpu, false, kind),
       list(context()),
       volumes(context(), grid, slots),
