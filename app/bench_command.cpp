@@ -172,6 +172,8 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
         m.frameMs.push_back(stats.gpuMs);
         for (const gpu::TimerResult& r : stats.passes) m.passes.add(r.name, r.ms);
         bounces = stats.bounces;
+        // Of the scene's triangles_renderer, what the raster passes drew after culling.
+        m.detail["triangles_drawn"] = {{"gbuffer", stats.gbufferTriangles}, {"shadow_maps", stats.shadowTriangles}};
         if (perFrame) recordFrameFlicker(renderer, frame, float(frame) * o.timeStep, stats, previous, m);
     }
     m.frames = uint32_t(m.frameMs.size());

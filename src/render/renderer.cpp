@@ -227,6 +227,7 @@ glm::mat4 Renderer::viewProjection() const {
 
 void Renderer::recordCameraGBuffer(VkCommandBuffer cmd) {
     const gpuscene::DrawList draws = gpuscene::visibleDraws(*sceneGpu_, viewProjection(), gpuscene::DrawFilter::All);
+    gbufferTriangles_ = draws.triangles();
     gbuffer_->record(cmd, tracker_, *sceneGpu_, draws, *frame_, targets_->gbuffer, timers_.get());
 }
 
@@ -492,6 +493,8 @@ FrameStats Renderer::renderFrame() {
     if (converge) historyHold_ = 0;  // the light has settled: nothing to hold back
     staticDirty_ = false;
     haveHistory_ = voxelizer_ != nullptr;
+    stats.gbufferTriangles = gbufferTriangles_;
+    stats.shadowTriangles = shadows_->drawnTriangles();
     for (const gpu::TimerResult& r : timers_->results()) {
         if (r.name == "frame") {
             stats.gpuMs = r.ms;

@@ -83,6 +83,10 @@ struct FrameStats {
     uint32_t bounces = 0;         // voxel bounces computed this frame
     double bounceChange = -1.0;   // relative radiance change of the last bounce (-1: not measured)
     bool converged = false;       // BounceMode::Converge reached its threshold this frame
+    // Triangles the raster passes were given after culling per view
+    // (gpuscene::visibleDraws): the camera's G-buffer, and all shadow views
+    // together (0 when every view kept its depth from an earlier frame).
+    uint64_t gbufferTriangles = 0, shadowTriangles = 0;
 };
 
 struct MemoryItem {
@@ -211,6 +215,7 @@ private:
     void recordTemporal(VkCommandBuffer cmd);
     glm::mat4 viewProjection() const;  // of the internal image (output x supersample)
     void recordCameraGBuffer(VkCommandBuffer cmd);
+    uint64_t gbufferTriangles_ = 0;  // of the last recordCameraGBuffer
     uint32_t lightSettleFrames() const;
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics

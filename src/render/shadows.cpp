@@ -143,6 +143,7 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     // leaves the other layers alone).
     std::vector<bool> stale(viewCount, true);
     reusedLayers_ = 0;
+    drawnTriangles_ = 0;
     if (statics == StaticShadows::Kept && keptMap_ == map.serial())
         for (uint32_t v = 0; v < viewCount && v < keptViews_.size(); ++v) {
             stale[v] = std::memcmp(&hostViews[v], &keptViews_[v], sizeof(sh::GpuShadowView)) != 0;
@@ -192,7 +193,7 @@ void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gp
 
 void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
                         const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map,
-                        gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers) const {
+                        gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers) {
     // Discarding the image's contents is right only when every layer is rendered again.
     tracker.image(map, gpu::use::DepthAttachment, clear && !layers).flush(cmd);
     const uint32_t size = map.desc().extent.width;
@@ -226,6 +227,7 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         vkCmdSetScissor(cmd, 0, 1, &scissor);
         // Each view rasterizes only what reaches its frustum (a point light's face: 90 degrees of it).
         const gpuscene::DrawList list = gpuscene::visibleDraws(scene, hostViews[v].viewProj, draws);
+        drawnTriangles_ += list.triangles();
         gpuscene::recordDraws(cmd, list, opaque_, alphaTested_, v);
         vkCmdEndRendering(cmd);
     }

@@ -74,13 +74,15 @@ public:
     VkDeviceSize cacheBytes() const { return cache_.handle() ? cache_.memorySize() : 0; }
     // Layers whose static depth the last record() reused (tests).
     uint32_t reusedLayers() const { return reusedLayers_; }
+    // Triangles the last record() drew, over all its views.
+    uint64_t drawnTriangles() const { return drawnTriangles_; }
     bool reusedStatic() const { return reusedLayers_ > 0 && reusedLayers_ == keptViews_.size(); }
 
 private:
     // `layers`: only the views marked true (null: every view).
     void render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
                 const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map,
-                gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers) const;
+                gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers);
     void copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
                     uint32_t layers) const;
 
@@ -92,6 +94,7 @@ private:
     std::vector<shader::GpuShadowView> keptViews_;
     uint64_t keptMap_ = 0;  // serial of the map the kept depth belongs to (0: nothing kept)
     uint32_t reusedLayers_ = 0;
+    uint64_t drawnTriangles_ = 0;
 };
 
 }  // namespace dvsgi::render

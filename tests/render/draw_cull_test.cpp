@@ -219,9 +219,11 @@ TEST_F(GpuTest, DrawCullingLeavesTheLitFrameUnchanged) {
     render::RenderSettings rs;
     rs.width = rs.height = 64;
     rs.voxels = 0;  // G-buffer, the point light's six shadow faces, direct light
-    auto renderFrame = [&](const scene::Scene& s, const render::RenderSettings& settings) {
+    render::FrameStats stats[2];
+    auto renderFrame = [&](const scene::Scene& s, const render::RenderSettings& settings, render::FrameStats* st) {
         render::Renderer r(context(), s, settings);
-        r.renderFrame();
+        const render::FrameStats f = r.renderFrame();
+        if (st) *st = f;
         return r.readOutput();
     };
     image::ImageRGBA32F frames[2];
@@ -235,12 +237,19 @@ TEST_F(GpuTest, DrawCullingLeavesTheLitFrameUnchanged) {
             EXPECT_EQ(kept, gpu.triangleCount);
         else
             EXPECT_LT(double(kept), 0.3 * double(gpu.triangleCount)) << kept << " of " << gpu.triangleCount;
-        frames[uncullable] = renderFrame(s, rs);
+        frames[uncullable] = renderFrame(s, rs, &stats[uncullable]);
+        // The frame reports what its raster passes drew: the camera's list,
+        // and the six shadow faces' lists (each face only its own part).
+        EXPECT_EQ(stats[uncullable].gbufferTriangles, kept);
+        if (uncullable)
+            EXPECT_EQ(stats[uncullable].shadowTriangles, 6 * gpu.triangleCount);
+        else
+            EXPECT_LT(stats[uncullable].shadowTriangles, 3 * gpu.triangleCount) << stats[uncullable].shadowTriangles;
     }
     // Not vacuous: the occluders' shadows are in the frame.
     render::RenderSettings unshadowed = rs;
     unshadowed.shadows = false;
-    const image::ImageRGBA32F noShadows = renderFrame(floorScene(false), unshadowed);
+    const image::ImageRGBA32F noShadows = renderFrame(floorScene(false), unshadowed, nullptr);
     ASSERT_EQ(frames[0].rgba.size(), frames[1].rgba.size());
     size_t differ = 0, shadowed = 0, lit = 0;
     for (size_t i = 0; i < frames[0].rgba.size(); i += 4) {
@@ -248,7 +257,9 @@ TEST_F(GpuTest, DrawCullingLeavesTheLitFrameUnchanged) {
         shadowed += noShadows.rgba[i] > frames[0].rgba[i] + 0.05f;
         lit += frames[0].rgba[i] + frames[0].rgba[i + 1] + frames[0].rgba[i + 2] > 0.05f;
     }
-    std::printf("pixels: %zu lit, %zu in shadow, %zu differing\n", lit, shadowed, differ);
+    std::printf("pixels: %zu lit, %zu in shadow, %zu differing; triangles drawn: G-buffer %llu, shadows %llu\n", lit,
+                shadowed, differ, (unsigned long long)stats[0].gbufferTriangles,
+                (unsigned long long)stats[0].shadowTriangles);
     EXPECT_EQ(differ, 0u);
     EXPECT_GT(lit, 1000u);
     EXPECT_GT(shadowed, 50u);
