@@ -57,9 +57,7 @@ DrawList visibleDraws(const SceneGpu& scene, const glm::mat4& viewProj, DrawFilt
         for (uint32_t c = 0; c < chunks.size(); ++c) {
             const scene::Bounds& b = chunks[c];
             glm::vec4 clip[8];
-            for (int k = 0; k < 8; ++k)
-                clip[k] = toClip * glm::vec4((k & 1) ? b.max.x : b.min.x, (k & 2) ? b.max.y : b.min.y,
-                                             (k & 4) ? b.max.z : b.min.z, 1.0f);
+            for (int k = 0; k < 8; ++k) clip[k] = toClip * glm::vec4(b.corner(k), 1.0f);
             if (outsideClipVolume(clip)) {
                 runChunks = 0;
                 continue;

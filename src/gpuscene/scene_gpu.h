@@ -5,7 +5,6 @@
 #include <memory>
 #include <vector>
 
-#include "gpu/pipeline.h"
 #include "gpu/resources.h"
 #include "gpu/texture_table.h"
 #include "scene/scene.h"

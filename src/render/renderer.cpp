@@ -58,7 +58,6 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
     : ctx_(ctx), scene_(sceneIn), settings_(settings) {
     const scene::Scene& scene = scene_;
     const std::vector<glm::mat4> world = scene::worldMatrices(scene);
-    for (const scene::DrawItem& it : scene::drawItems(scene, world)) drawWorld_.push_back(it.world);
     const std::vector<scene::PlacedCamera> cameras = scene::placedCameras(scene, world);
     if (cameras.empty()) throw std::runtime_error(scene.source + ": the scene has no camera");
     if (settings.camera < 0 || size_t(settings.camera) >= cameras.size())
@@ -194,10 +193,9 @@ void Renderer::uploadLights() {
 void Renderer::sceneChanged() {
     const std::vector<glm::mat4> world = scene::worldMatrices(scene_);
     const std::vector<scene::DrawItem> items = scene::drawItems(scene_, world);
-    for (size_t i = 0; i < items.size() && i < drawWorld_.size(); ++i)
-        if (!sceneGpu_->ranges[i].dynamic && items[i].world != drawWorld_[i]) staticDirty_ = true;
-    drawWorld_.clear();
-    for (const scene::DrawItem& it : items) drawWorld_.push_back(it.world);
+    // SceneGpu still holds the world matrices it last uploaded.
+    for (size_t i = 0; i < items.size() && i < sceneGpu_->drawWorld.size(); ++i)
+        if (!sceneGpu_->ranges[i].dynamic && items[i].world != sceneGpu_->drawWorld[i]) staticDirty_ = true;
     sceneGpu_->updateDraws(ctx_, scene_, items);
     const std::vector<scene::PlacedCamera> cameras = scene::placedCameras(scene_, world);
     camera_ = cameras.at(size_t(settings_.camera));
@@ -434,6 +432,7 @@ FrameStats Renderer::renderFrame() {
         if (++historyTag_ == UINT32_MAX) historyTag_ = 1;
     }
     temporalState_.beginFrame();
+    gbufferTriangles_ = 0;
     gpu::GpuTimers* t = timers_.get();
     FrameStats stats;
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;

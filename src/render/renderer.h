@@ -279,7 +279,6 @@ private:
     TemporalState temporalState_;  // dropped when static geometry, lights or settings change
     std::vector<uint8_t> lightRecords_;  // the GpuLight records last uploaded, to notice a change
     uint32_t convergedBounces_ = 0;      // bounces the last converging frame took
-    std::vector<glm::mat4> drawWorld_;  // last uploaded world matrix per draw
     bool staticDirty_ = true;
     bool shadowsStale_ = false;  // the next frame's shadows: StaticShadows::Uncached (after revoxelizeStatic)
     std::optional<scene::CameraPath> cameraPath_;

@@ -132,6 +132,10 @@ struct Bounds {
     glm::vec3 min{1e30f};
     glm::vec3 max{-1e30f};
     bool valid() const { return min.x <= max.x; }
+    // Corner k of the box: bit 0, 1, 2 of k pick max over min in x, y, z.
+    glm::vec3 corner(int k) const {
+        return {(k & 1) ? max.x : min.x, (k & 2) ? max.y : min.y, (k & 4) ? max.z : min.z};
+    }
 };
 
 // World matrix of every node (index = node index); nodes not reachable from

@@ -51,9 +51,7 @@ void chunkWorldBounds(const scene::Bounds& local, const glm::mat4& world, glm::v
     lo = glm::vec3(1e30f);
     hi = glm::vec3(-1e30f);
     for (int c = 0; c < 8; ++c) {
-        const glm::vec3 p((c & 1) ? local.max.x : local.min.x, (c & 2) ? local.max.y : local.min.y,
-                          (c & 4) ? local.max.z : local.min.z);
-        const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
+        const glm::vec3 w = glm::vec3(world * glm::vec4(local.corner(c), 1.0f));
         lo = glm::min(lo, w);
         hi = glm::max(hi, w);
     }

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -49,6 +50,19 @@ bool triangleReachesClipVolume(const std::array<dvec4, 3>& tri) {
     return !poly.empty();
 }
 
+// Appends the polygon a, b, c[, d] (a triangle or a quad) as triangles.
+void appendPolygon(scene::Primitive& p, std::initializer_list<glm::vec3> corners) {
+    const uint32_t base = uint32_t(p.vertices.size());
+    for (const glm::vec3& at : corners) {
+        scene::Vertex v;
+        v.position = at;
+        v.normal = glm::vec3(0, 1, 0);
+        p.vertices.push_back(v);
+    }
+    p.indices.insert(p.indices.end(), {base, base + 1, base + 2});
+    if (corners.size() == 4) p.indices.insert(p.indices.end(), {base, base + 2, base + 3});
+}
+
 // Groups of 32 quads (one chunk of 64 triangles each) around random
 // centres, and a last group of 7, so the primitive's last chunk is partial.
 scene::Primitive scatteredQuads(std::mt19937& rng, int groups) {
@@ -60,14 +74,7 @@ scene::Primitive scatteredQuads(std::mt19937& rng, int groups) {
             const glm::vec3 o = c + glm::vec3(offset(rng), offset(rng), offset(rng));
             const glm::vec3 u(unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f);
             const glm::vec3 v(unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f);
-            const uint32_t base = uint32_t(p.vertices.size());
-            for (const glm::vec3& pos : {o - u - v, o + u - v, o + u + v, o - u + v}) {
-                scene::Vertex vx;
-                vx.position = pos;
-                vx.normal = glm::vec3(0, 1, 0);
-                p.vertices.push_back(vx);
-            }
-            p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+            appendPolygon(p, {o - u - v, o + u - v, o + u + v, o - u + v});
         }
     }
     return p;
@@ -168,25 +175,11 @@ TEST_F(GpuTest, DrawCullingKeepsEveryTriangleThatReachesTheClipVolume) {
 scene::Scene floorScene(bool uncullable) {
     scene::Scene s;
     auto quad = [](scene::Primitive& p, glm::vec3 c, float h) {
-        const uint32_t base = uint32_t(p.vertices.size());
-        const glm::vec3 corners[4] = {{-h, 0, -h}, {-h, 0, h}, {h, 0, h}, {h, 0, -h}};
-        for (const glm::vec3& o : corners) {
-            scene::Vertex v;
-            v.position = c + o;
-            v.normal = glm::vec3(0, 1, 0);
-            p.vertices.push_back(v);
-        }
-        p.indices.insert(p.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        appendPolygon(p, {c + glm::vec3(-h, 0, -h), c + glm::vec3(-h, 0, h), c + glm::vec3(h, 0, h),
+                          c + glm::vec3(h, 0, -h)});
     };
     auto spanning = [](scene::Primitive& p) {
-        const uint32_t base = uint32_t(p.vertices.size());
-        for (const glm::vec3& at : {glm::vec3(-50, -50, -50), glm::vec3(0, 0, 0), glm::vec3(50, 50, 50)}) {
-            scene::Vertex v;
-            v.position = at;
-            v.normal = glm::vec3(0, 1, 0);
-            p.vertices.push_back(v);
-        }
-        p.indices.insert(p.indices.end(), {base, base + 1, base + 2});
+        appendPolygon(p, {glm::vec3(-50, -50, -50), glm::vec3(0, 0, 0), glm::vec3(50, 50, 50)});
     };
     scene::Primitive floor;
     for (int by = 0; by < 16; ++by)
