@@ -2,6 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/aniso_filter_pass.h"
 #include "shared/voxel_data.h"
+#ifdef DVSGI_TWO_SIDED
+#include "shared/voxel_list_pass.h"
+#endif
 
 // Anisotropic filtering (paper section VII). Each target voxel covers 2x2x2
 // source voxels. For each of the six travel directions, the four child columns
@@ -9,33 +12,82 @@
 // "front" = the child a ray travelling that way enters first) and averaged.
 // The base level reads the radiance volume for all six directions; each upper
 // level reads the same direction's previous level.
+//
+// With DVSGI_TWO_SIDED, the base level's second pass: one invocation per entry of
+// the occupied-voxel list, and for each two-sided voxel (lib/voxel_sides.glsl)
+// its cell again, now with the voxel showing rays along its axis the side they
+// meet and rays across it an opaque black edge (a thin wall seen edge-on shows
+// neither face; showing eq. 5's radiance let a sunlit roof light the room
+// below it, docs/quality.md), and a voxel two-sided along several axes black
+// every way. The cell's first two-sided voxel writes it. A pass of its own, so
+// that the first, over every cell, stays as cheap as before (llvmpipe runs
+// both sides of a branch).
+#ifdef DVSGI_TWO_SIDED
+layout(local_size_x = VOXEL_LIST_GROUP) in;
+#else
 layout(local_size_x = ANISO_GROUP, local_size_y = ANISO_GROUP, local_size_z = ANISO_GROUP) in;
+#endif
 
 layout(set = 0, binding = BIND_ANISO_SOURCE, rgba16f) uniform readonly image3D source;
 layout(set = 0, binding = BIND_ANISO_SOURCE_DIRS, rgba16f) uniform readonly image3D sourceDirs;
 layout(set = 0, binding = BIND_ANISO_TARGET_DIRS, rgba16f) uniform writeonly image3D targetDirs;
 layout(push_constant) uniform Push { AnisoPush pc; };
 
+#ifdef DVSGI_TWO_SIDED
+layout(set = 0, binding = BIND_ANISO_GRID) uniform Grid { VoxelGrid grid; };
+VOXEL_INDEX_BLOCK(BIND_ANISO_INDEX, readonly);
+VOXEL_LIST_BLOCK(BIND_ANISO_LIST, readonly);
+layout(set = 0, binding = BIND_ANISO_DIRECT, rgba16f) uniform readonly image3D direct;
+layout(set = 0, binding = BIND_ANISO_SIDES, rgba32ui) uniform readonly uimage3D sides;
+
+#include "lib/voxel_index.glsl"
+#include "lib/voxel_list_dispatch.glsl"
+#include "lib/voxel_sides.glsl"
+
+// The cell's eight voxels as the six directions see them: the radiance, and
+// for a two-sided voxel its axis and its two sides (+axis, -axis).
+vec4 children[8];
+int childAxis[8];  // -1: the same every way
+vec3 childSide[8][2];
+
+// The side code of voxel p and its slot + 1 (0: empty).
+uint sideCodeAt(ivec3 p, out uint slot) {
+    slot = voxelSlotAt(p);
+    return slot == 0u ? SIDE_ONE : uint(imageLoad(direct, slotTexel(slot - 1u, 0u)).a + 0.5) - 1u;
+}
+
+void loadChildren(ivec3 base) {
+    for (int i = 0; i < 8; ++i) {
+        ivec3 p = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        children[i] = imageLoad(source, p);
+        childAxis[i] = -1;
+        uint slot;
+        // Only voxels with TWO_SIDED_OPACITY hold another code.
+        uint code = children[i].a > 0.0 && children[i].a < 1.0 ? sideCodeAt(p, slot) : SIDE_ONE;
+        if (code == SIDE_ONE) continue;
+        children[i] = vec4(0.0, 0.0, 0.0, 1.0);
+        if (code == SIDE_SEVERAL) continue;  // where thin walls meet no side is the one a ray meets
+        uvec4 t = imageLoad(sides, slotTexel(slot - 1u, 0u));
+        childAxis[i] = int(code) - 1;
+        childSide[i][0] = unpackRgb9e5(t.x) + unpackRgb9e5(t.z);
+        childSide[i][1] = unpackRgb9e5(t.y) + unpackRgb9e5(t.w);
+    }
+}
+
+vec4 child(uint dir, ivec3 p) {
+    int i = (p.x & 1) + 2 * (p.y & 1) + 4 * (p.z & 1);
+    // Travelling toward -axis (even dir) a ray meets the +axis side.
+    if (childAxis[i] == int(dir / 2u)) return vec4(childSide[i][dir % 2u == 0u ? 0 : 1], 1.0);
+    return children[i];
+}
+#else
 vec4 child(uint dir, ivec3 p) {
     return pc.sizes.y != 0u ? imageLoad(source, p) : imageLoad(sourceDirs, directionalTexel(dir, p, 2 * int(pc.sizes.x)));
 }
+#endif
 
-void main() {
-    ivec3 v = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(v, ivec3(pc.sizes.x)))) return;
+void composite(ivec3 v, int size) {
     ivec3 base = v * 2;
-    int size = int(pc.sizes.x);
-    // Most of a grid is empty. Where the eight children of one direction are
-    // all zero, so are the other five's (each is a composite of the same
-    // voxels) and every result: eight loads decide it instead of the 48 below.
-    // Empty regions are large, so whole SIMD groups take this branch together.
-    bool empty = true;
-    for (int i = 0; i < 8; ++i)
-        empty = empty && all(equal(child(0u, base + ivec3(i & 1, (i >> 1) & 1, i >> 2)), vec4(0.0)));
-    if (empty) {
-        for (uint dir = 0u; dir < DIRECTIONAL_VOLUMES; ++dir) imageStore(targetDirs, directionalTexel(dir, v, size), vec4(0.0));
-        return;
-    }
     for (uint dir = 0u; dir < DIRECTIONAL_VOLUMES; ++dir) {
         int axis = int(dir / 2u);
         // Travelling toward -axis (even dir) the ray enters the +axis child first.
@@ -54,3 +106,39 @@ void main() {
         imageStore(targetDirs, directionalTexel(dir, v, size), sum * 0.25);
     }
 }
+
+#ifdef DVSGI_TWO_SIDED
+void main() {
+    uint entry = listInvocation();
+    if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
+    ivec3 voxel = listVoxel(list.entries[entry]);
+    if (imageLoad(direct, slotTexel(entry, 0u)).a < 1.5) return;  // one-sided (alpha 1 + code)
+    ivec3 v = voxel / 2;
+    // The cell's first two-sided voxel (x fastest) owns it.
+    int self = (voxel.x & 1) + 2 * (voxel.y & 1) + 4 * (voxel.z & 1);
+    for (int i = 0; i < self; ++i) {
+        float a = imageLoad(source, v * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2)).a;
+        if (a > 0.0 && a < 1.0) return;
+    }
+    loadChildren(v * 2);
+    composite(v, int(pc.sizes.x));
+}
+#else
+void main() {
+    ivec3 v = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(v, ivec3(pc.sizes.x)))) return;
+    ivec3 base = v * 2;
+    int size = int(pc.sizes.x);
+    // Most of a grid is empty. Where the eight children of one direction are
+    // all zero, so are the other five's (each is a composite of the same
+    // voxels) and every result: eight loads decide it instead of the 48 below.
+    // Empty regions are large, so whole SIMD groups take this branch together.
+    bool empty = true;
+    for (int i = 0; i < 8; ++i) empty = empty && all(equal(child(0u, base + ivec3(i & 1, (i >> 1) & 1, i >> 2)), vec4(0.0)));
+    if (empty) {
+        for (uint dir = 0u; dir < DIRECTIONAL_VOLUMES; ++dir) imageStore(targetDirs, directionalTexel(dir, v, size), vec4(0.0));
+        return;
+    }
+    composite(v, size);
+}
+#endif

@@ -9,7 +9,10 @@
 // directional volumes of the radiance so far, times albedo / pi, added to the
 // voxel's direct light + emission. Repeating it (re-filtering between) gives
 // L_direct + T L_direct + ... ; reading the previous frame's volumes instead
-// (feedback) adds one bounce per frame at the cost of one.
+// (feedback) adds one bounce per frame at the cost of one. A two-sided voxel
+// (lib/voxel_sides.glsl) gathers over the hemisphere of the side its weights
+// favour, which its radiance keeps, and with one wide cone over the other's;
+// both go to its side light.
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
@@ -28,11 +31,13 @@ layout(set = 0, binding = BIND_BOUNCE_DIRECT, rgba16f) uniform readonly image3D 
 layout(set = 0, binding = BIND_BOUNCE_OUT, rgba16f) uniform image3D outRadiance;
 layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { float stats[]; };
 layout(set = 0, binding = BIND_BOUNCE_HISTORY, rgba32ui) uniform uimage3D history;
+layout(set = 0, binding = BIND_BOUNCE_SIDES, rgba32ui) uniform uimage3D sides;
 VOXEL_LIST_BLOCK(BIND_BOUNCE_LIST, readonly);
 layout(push_constant) uniform Push { BouncePush pc; };
 
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
+#include "lib/voxel_sides.glsl"
 #include "lib/voxel_window.glsl"
 #include "lib/cone_trace.glsl"
 #include "lib/voxel_list_dispatch.glsl"
@@ -50,38 +55,74 @@ shared vec2 partial[GROUP_SIZE];
 // a slot that held another voxel last frame, or was not bounced then, or any
 // slot while the host holds the history back (after a change of lights,
 // static geometry or settings), takes the new value as it is.
-vec3 blendWithHistory(ivec3 v, uint slot, vec3 value) {
+// A two-sided voxel's side light keeps its own last reflected light; its
+// other side blends with it where the slot's history blends and the voxel had
+// the same sides then (`sideTag`: 1 + 2 axis + the favoured side, 0 for a
+// one-sided voxel, kept in the history's spare half).
+vec3 blendWithHistory(ivec3 v, uint slot, vec3 value, float sideTag, out bool sidesBlend) {
     ivec3 corner = ivec3(round(grid.originSize.xyz / grid.originSize.w));
     uint key = packVoxel((v + corner) & ivec3((1 << VOXEL_LIST_COORD_BITS) - 1));
     ivec3 texel = slotTexel(slot, 0u);
     uvec4 h = imageLoad(history, texel);
-    if (h.z == key && h.w == pc.blend.y) {
+    bool same = h.z == key && h.w == pc.blend.y;
+    sidesBlend = same && unpackHalf2x16(h.y).y == sideTag;
+    if (same) {
         vec3 before = vec3(unpackHalf2x16(h.x), unpackHalf2x16(h.y).x);
         value = before + uintBitsToFloat(pc.blend.z) * (value - before);
     }
-    imageStore(history, texel, uvec4(packHalf2x16(value.rg), packHalf2x16(vec2(value.b, 0.0)), key, pc.blend.x));
+    imageStore(history, texel, uvec4(packHalf2x16(value.rg), packHalf2x16(vec2(value.b, sideTag)), key, pc.blend.x));
     return value;
 }
 
 vec4 bounced(ivec3 v, uint slot) {
     vec4 d = imageLoad(direct, slotTexel(slot, 0u));
+    uint code = uint(d.a + 0.5) - 1u;
+    vec3 pos, neg;
+    voxelNormalWeights(slot, pos, neg);
     vec3 n = voxelNormal(slot);
     if (dot(n, n) < 0.5) {  // opposite faces cancelled: use the strongest weight's axis
-        vec3 pos, neg;
-        voxelNormalWeights(slot, pos, neg);
         vec3 m = max(pos, neg);
         int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
         n = vec3(0.0);
         n[a] = pos[a] >= neg[a] ? 1.0 : -1.0;
     }
+    bool twoSided = code >= 1u && code <= 3u;
+    int axis = twoSided ? int(code) - 1 : 0;
+    // A two-sided voxel's radiance takes the side its weights favour.
+    int strong = twoSided && pos[axis] < neg[axis] ? 1 : 0;
+    if (twoSided) {
+        n = vec3(0.0);
+        n[axis] = strong == 0 ? 1.0 : -1.0;
+    }
     float s = grid.originSize.w;
     // Start off the surface (two voxels: vxgi::bounceCones) so the cones do not gather the voxel itself.
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
-    vec3 E = gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
-    vec3 reflected = voxelAlbedo(slot) / PI * E;
-    if (pc.blend.x != 0u) reflected = blendWithHistory(v, slot, reflected);
-    return vec4(d.rgb + reflected, d.a);
+    vec3 albedo = voxelAlbedo(slot);
+    vec3 reflected = albedo / PI * gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
+    // The other side of a two-sided voxel gathers with one cone of 60 degrees
+    // half-angle: six cones cost the bounce 40 % more on Sponza, where many
+    // voxels hold thin geometry.
+    vec3 other = vec3(0.0);
+    if (twoSided) {
+        vec3 m = -n;
+        vec3 o = grid.originSize.xyz + (vec3(v) + 0.5 + m * pc.cone.surface.z) * s;
+        other = albedo * traceCone(o, m, s * pc.cone.surface.z, m, 1.7320508, pc.cone, false).rgb;
+    }
+    bool blended = false;
+    float sideTag = twoSided ? float(1 + 2 * axis + strong) : 0.0;
+    if (pc.blend.x != 0u) reflected = blendWithHistory(v, slot, reflected, sideTag, blended);
+    if (twoSided) {
+        ivec3 texel = slotTexel(slot, 0u);
+        uvec4 t = imageLoad(sides, texel);
+        if (blended) {
+            vec3 before = unpackRgb9e5(strong == 0 ? t.w : t.z);
+            other = before + uintBitsToFloat(pc.blend.z) * (other - before);
+        }
+        vec3 side0 = strong == 0 ? reflected : other, side1 = strong == 0 ? other : reflected;
+        imageStore(sides, texel, uvec4(t.xy, packRgb9e5(side0), packRgb9e5(side1)));
+    }
+    return vec4(d.rgb + reflected, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY);
 }
 
 void main() {

@@ -8,8 +8,10 @@
 // Direct light per occupied voxel (paper section VI), visible or not: Lambert
 // radiance rho/pi * E * attenuation * visibility for every light, plus the
 // voxel's emitted radiance. Writes it to the voxel's slot of the direct light
-// (kept for the bounces) and to the radiance volume, alpha = opacity (1 for
-// occupied voxels).
+// (kept for the bounces; alpha 1 + its side code) and to the radiance volume,
+// alpha = opacity (1 for occupied voxels, TWO_SIDED_OPACITY for those with
+// another side code). A two-sided voxel
+// (lib/voxel_sides.glsl) is also lit side by side into its side light.
 // One invocation per occupied voxel (an entry of the list); empty voxels keep
 // the zero that clears left.
 layout(local_size_x = VOXEL_LIST_GROUP) in;
@@ -21,18 +23,27 @@ layout(set = 0, binding = BIND_INJECT_SHADOW_VIEWS, std430) readonly buffer View
 layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
 layout(set = 0, binding = BIND_INJECT_DIRECT, rgba16f) uniform writeonly image3D outDirect;
 layout(set = 0, binding = BIND_INJECT_OUT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
+layout(set = 0, binding = BIND_INJECT_SIDES, rgba32ui) uniform uimage3D sides;
 VOXEL_INDEX_BLOCK(BIND_INJECT_INDEX, readonly);
 VOXEL_LIST_BLOCK(BIND_INJECT_LIST, readonly);
 layout(push_constant) uniform Push { VoxelLightPush pc; };
 
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
+#include "lib/voxel_sides.glsl"
 #include "lib/voxel_index.glsl"
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
 #include "lib/voxel_trace.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 
+
+float visibility(GpuLight light, uint mode, vec3 P, vec3 n, vec3 L, float dist) {
+    if (mode == OCCLUSION_SHADOW_MAP && pc.flags.w != 0u) return shadowVisibility(light, P, n, pc.params.y);
+    if (mode == OCCLUSION_RAYCAST_HARD || mode == OCCLUSION_RAYCAST_SOFT)
+        return voxelRayVisibility(P, L, dist, mode == OCCLUSION_RAYCAST_SOFT, pc.params.x);
+    return 1.0;
+}
 
 void main() {
     uint entry = listInvocation();
@@ -44,34 +55,53 @@ void main() {
     voxelNormalWeights(slot, pos, neg);
     vec3 n = voxelNormal(slot);
     float s = grid.originSize.w;
+    vec3 centre = grid.originSize.xyz + (vec3(v) + 0.5) * s;
     // Lit position: the voxel centre pushed half a voxel along its normal.
-    vec3 P = grid.originSize.xyz + (vec3(v) + 0.5) * s + n * (0.5 * s);
+    vec3 P = centre + n * (0.5 * s);
+    // A two-sided voxel's sides (+axis, -axis) are lit as faces with those
+    // normals, from just outside the voxel on their side: a thin wall's
+    // shadowed face stays dark however the wall's sunlit face is weighted.
+    uint code = sideCode(pos, neg);
+    int axis = code >= 1u && code <= 3u ? int(code) - 1 : -1;
+    vec3 sideN[2] = vec3[2](vec3(0.0), vec3(0.0));
+    if (axis >= 0) {
+        sideN[0][axis] = 1.0;
+        sideN[1][axis] = -1.0;
+    }
 
     // Emitters lit explicitly (as LIGHT_AREA patches) keep their emission out
     // of the radiance that cones gather, or it would be counted twice.
     vec3 radiance = pc.params.z > 0.5 ? voxelEmission(slot) : vec3(0.0);
+    vec3 side[2] = vec3[2](radiance, radiance);
     for (uint i = 0u; i < pc.flags.x; ++i) {
         GpuLight light = lights[i];
         vec3 L;
         float dist;
         vec3 E = lightIrradiance(light, P, L, dist);
-        // Eq. 5 generalized to signed weights: sum over axes of the weight of
-        // the normals facing the light along that axis times the cosine there.
-        // For a single normal it is exactly W_x D_x + W_y D_y + W_z D_z.
-        float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : max(dot(n, L), 0.0);
-        if (att <= 0.0 || all(equal(E, vec3(0.0)))) continue;
+        if (all(equal(E, vec3(0.0)))) continue;
         uint mode = pc.flags.z != OCCLUSION_PER_LIGHT ? pc.flags.z : light.shadow.z;
         bool area = uint(light.position.w) == LIGHT_AREA;
         // Patches have no shadow maps; their rays stop short of the emitter's own voxels.
         if (area && mode == OCCLUSION_SHADOW_MAP) mode = OCCLUSION_RAYCAST_HARD;
         if (area) dist -= 2.0 * s / max(abs(dot(light.direction.xyz, L)), 0.2);
-        float vis = 1.0;
-        if (mode == OCCLUSION_SHADOW_MAP && pc.flags.w != 0u)
-            vis = shadowVisibility(light, P, n, pc.params.y);
-        else if (mode == OCCLUSION_RAYCAST_HARD || mode == OCCLUSION_RAYCAST_SOFT)
-            vis = voxelRayVisibility(P, L, dist, mode == OCCLUSION_RAYCAST_SOFT, pc.params.x);
-        radiance += albedo / PI * E * att * vis;
+        // Eq. 5 generalized to signed weights: sum over axes of the weight of
+        // the normals facing the light along that axis times the cosine there.
+        // For a single normal it is exactly W_x D_x + W_y D_y + W_z D_z.
+        float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : max(dot(n, L), 0.0);
+        if (att > 0.0) radiance += albedo / PI * E * att * visibility(light, mode, P, n, L, dist);
+        if (axis < 0) continue;
+        for (int k = 0; k < 2; ++k) {
+            float cosine = dot(sideN[k], L);
+            if (cosine > 0.0)
+                side[k] += albedo / PI * E * cosine * visibility(light, mode, centre + sideN[k] * (0.5 * s), sideN[k], L, dist);
+        }
     }
-    imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, 1.0));
-    imageStore(outRadiance, v, vec4(radiance, 1.0));
+    imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, 1.0 + float(code)));
+    imageStore(outRadiance, v, vec4(radiance, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY));
+    if (axis < 0) return;
+    // The reflected light stays for a feedback frame's bounce to blend with;
+    // otherwise the bounces start from none.
+    ivec3 texel = slotTexel(slot, 0u);
+    uvec2 reflected = pc.params.w > 0.5 ? imageLoad(sides, texel).zw : uvec2(0u);
+    imageStore(sides, texel, uvec4(packRgb9e5(side[0]), packRgb9e5(side[1]), reflected));
 }

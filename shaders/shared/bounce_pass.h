@@ -37,6 +37,7 @@ DVSGI_CONST(uint, BIND_BOUNCE_GRID, 8);       // clipmap: the bounced level's ow
 // world voxel it belonged to (packed, modulo 1024 per axis), w the frame tag
 // it was written with.
 DVSGI_CONST(uint, BIND_BOUNCE_HISTORY, 9);
+DVSGI_CONST(uint, BIND_BOUNCE_SIDES, 10);  // per-slot side light (lib/voxel_sides.glsl): reads direct, writes reflected
 
 DVSGI_END
 

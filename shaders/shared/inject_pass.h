@@ -12,7 +12,8 @@ struct VoxelLightPush {
     uvec4 flags;   // x light count, y 1 = normal-weighted attenuation (eq. 5), 0 = Lambert N.L (eq. 2),
                    // z occlusion override (OCCLUSION_*), w shadows rendered (1/0)
     vec4 params;   // x soft-shadow kappa, y shadow-map normal offset (texels), z 1 = add emission to the
-                   // radiance (0 when emitters are area lights)
+                   // radiance (0 when emitters are area lights), w 1 = keep the side light's reflected part
+                   // (a feedback frame's bounce blends with it)
 };
 DVSGI_CHECK_SIZE(VoxelLightPush, 32);
 
@@ -24,7 +25,8 @@ DVSGI_CONST(uint, BIND_INJECT_SHADOW_MAP, 4);
 DVSGI_CONST(uint, BIND_INJECT_DIRECT, 5);  // per-slot direct light + emission (kept for the bounces)
 DVSGI_CONST(uint, BIND_INJECT_LIST, 6);  // occupied-voxel list: one invocation per entry (= slot)
 DVSGI_CONST(uint, BIND_INJECT_INDEX, 7);  // slot index volume: occupancy for voxel shadow rays
-DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1
+DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1 (TWO_SIDED_OPACITY: two-sided)
+DVSGI_CONST(uint, BIND_INJECT_SIDES, 9);  // per-slot side light of two-sided voxels (lib/voxel_sides.glsl)
 
 DVSGI_END
 

@@ -34,6 +34,24 @@ DVSGI_CONST(uint, CH_NORMAL_POS_Z, 11);
 DVSGI_CONST(uint, CH_NORMAL_NEG_Z, 12);
 DVSGI_CONST(uint, VOXEL_CHANNELS, 13);
 
+// Thin walls. A voxel whose normal weights hold both signs of one axis (each
+// at least TWO_SIDED_MIN_WEIGHT) holds both faces of a wall thinner than a
+// voxel, or two surfaces facing each other across it: one radiance cannot
+// serve both sides. Such a voxel is lit and bounced per side as well, and
+// rays along that axis see the side they meet (shaders/lib/voxel_sides.glsl).
+// Its side code (SIDE_*) is kept in the alpha of its direct light, as
+// 1 + code, so that one-sided voxels keep alpha 1.
+DVSGI_CONST(float, TWO_SIDED_MIN_WEIGHT, 0.1);
+DVSGI_CONST(uint, SIDE_ONE, 0);      // one-sided: the same radiance every way
+// 1-3: two-sided along axis code - 1
+DVSGI_CONST(uint, SIDE_SEVERAL, 4);  // two-sided along several axes: an edge or corner where thin walls meet
+// The radiance volume's opacity of a voxel with any side code but SIDE_ONE:
+// fp16's largest value below 1 (1 - 2^-11), so that the filter looks up the
+// side light of these voxels only. Cones sampling the radiance volume let
+// through under 5e-4 of a voxel instead of 1e-4 (the tracer caps opacity at
+// 0.9999): nothing an image shows.
+DVSGI_CONST(float, TWO_SIDED_OPACITY, 0.99951171875);
+
 // Slots per row of the per-slot images (attributes, voxel direct light);
 // capacities are whole rows.
 DVSGI_CONST(uint, VOXEL_SLOT_ROW, 4096);

@@ -304,6 +304,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     // hold the previous frame's filtered radiance: one more bounce of light.
     const bool feedback = feedbackFrame();
     const bool blend = blendsVoxelRadiance();
+    light.keepSideReflection = feedback;
     const std::optional<vxgi::ClipTrace> trace = bounceTrace();
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {

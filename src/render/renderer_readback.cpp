@@ -51,10 +51,11 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"voxel attributes", volumes_->accum.memorySize()});
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
         items.push_back({"voxel direct light", volumes_->direct.memorySize()});
+        items.push_back({"voxel side light", volumes_->sides.memorySize()});
         items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
         // --clipmap: the items above are level 0's; each coarser level holds
-        // its index, attributes, direct light and list, and one set of dense
+        // its index, attributes, direct and side light and list, and one set of dense
         // volumes serves them all.
         const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
         for (size_t l = 1; l < levels.size(); ++l)

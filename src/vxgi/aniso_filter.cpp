@@ -1,12 +1,15 @@
 #include "vxgi/aniso_filter.h"
 
 #include <algorithm>
+#include <cstddef>
 
 #include "gpu/context.h"
 #include "gpu/timers.h"
 #include "gpu/tracker.h"
 #include "shared/aniso_filter_pass.h"
+#include "shared/voxel_list_pass.h"
 #include "vxgi/volumes.h"
+#include "vxgi/voxel_list.h"
 
 namespace dvsgi::vxgi {
 
@@ -16,6 +19,9 @@ namespace sh = dvsgi::shader;
 
 const uint32_t kAniso[] = {
 #include "shaders/aniso_filter.comp.inc"
+};
+const uint32_t kAnisoTwoSided[] = {
+#include "shaders/aniso_filter_two_sided.comp.inc"
 };
 
 }  // namespace
@@ -29,12 +35,17 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::AnisoPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kAniso), layout, "anisotropic filtering");
+    layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                                                   {sh::BIND_ANISO_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                                                   {sh::BIND_ANISO_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                                                   {sh::BIND_ANISO_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                                                   {sh::BIND_ANISO_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}});
+    twoSided_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoTwoSided), layout, "anisotropic filtering (two-sided voxels)");
 }
 
 void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                              gpu::GpuTimers* timers, const char* timerName) const {
     gpu::GpuTimerScope timer(timers, cmd, timerName);
-    gpu::bind(cmd, pipeline_);
     for (uint32_t level = 0; level < v.directionalMips; ++level) {
         // Level 0 reads the radiance volume, every other level the one below it.
         // At level 0 the unused source binding still needs a valid view: it
@@ -45,6 +56,7 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
         if (level > 0) tracker.imageMip(v.directional, level - 1, gpu::use::ComputeRead);
         tracker.imageMip(v.directional, level, level == 0 ? gpu::use::ComputeReadWrite : gpu::use::ComputeWrite, true);
         tracker.flush(cmd);
+        gpu::bind(cmd, pipeline_);
         gpu::Descriptors()
             .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
             .storageImage(sh::BIND_ANISO_SOURCE_DIRS, source)
@@ -55,7 +67,32 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
         gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         const uint32_t groups = gpu::groupCount(size, sh::ANISO_GROUP);
         vkCmdDispatch(cmd, groups, groups, groups);
+        if (level == 0) recordTwoSided(cmd, tracker, v);
     }
+}
+
+// The cells holding two-sided voxels, again (aniso_filter.comp, DVSGI_TWO_SIDED).
+void AnisoFilterPass::recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
+    tracker.image(v.direct, gpu::use::ComputeRead)
+        .image(v.sides, gpu::use::ComputeRead)
+        .buffer(v.index, gpu::use::BufferComputeRead)
+        .buffer(v.list, gpu::use::IndirectComputeRead)
+        .imageMip(v.directional, 0, gpu::use::ComputeReadWrite)
+        .flush(cmd);
+    gpu::bind(cmd, twoSided_);
+    gpu::Descriptors()
+        .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
+        .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(0))
+        .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(0))
+        .uniformBuffer(sh::BIND_ANISO_GRID, v.gridBuffer.handle())
+        .storageBuffer(sh::BIND_ANISO_INDEX, v.index.handle())
+        .storageImage(sh::BIND_ANISO_DIRECT, v.direct.view())
+        .storageImage(sh::BIND_ANISO_SIDES, v.sides.view())
+        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle())
+        .push(ctx_, cmd, twoSided_);
+    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 1u, 0u, 0u)};
+    gpu::pushConstants(cmd, twoSided_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }
 
 }  // namespace dvsgi::vxgi

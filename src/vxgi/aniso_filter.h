@@ -16,13 +16,18 @@ class VoxelVolumes;
 class AnisoFilterPass {
 public:
     explicit AnisoFilterPass(const gpu::Context& ctx);
-    // Reads `radiance`, writes every level of the directional volumes.
+    // Reads `radiance`, writes every level of the directional volumes; the
+    // cells that hold two-sided voxels (lib/voxel_sides.glsl) are written
+    // again from the voxels' side light before the next level.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, gpu::GpuTimers* timers,
                 const char* timerName) const;
 
 private:
+    void recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
+
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;
+    gpu::Pipeline twoSided_;
 };
 
 }  // namespace dvsgi::vxgi

@@ -48,7 +48,8 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
                        {sh::BIND_BOUNCE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_BOUNCE_STATS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_BOUNCE_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                       {sh::BIND_BOUNCE_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_BOUNCE_HISTORY, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_BOUNCE_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
@@ -69,6 +70,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
                         const ClipTrace* clip, uint32_t level, const VoxelHistory* history) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
+    tracker.image(v.sides, gpu::use::ComputeReadWrite);
     tracker.image(v.directional, gpu::use::ComputeRead);
     if (clip) tracker.image(clip->atlases.directional, gpu::use::ComputeRead);
     // Read and written: the statistics compare each voxel with its value before.
@@ -101,6 +103,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
         .storageImage(sh::BIND_BOUNCE_HISTORY, historyImage.view())
+        .storageImage(sh::BIND_BOUNCE_SIDES, v.sides.view())
         .push(ctx_, cmd, pipeline);
     const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
                                                   std::bit_cast<uint32_t>(history->alpha), 0u)

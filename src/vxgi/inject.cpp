@@ -33,7 +33,8 @@ InjectPass::InjectPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_INJECT_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_INJECT_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                       {sh::BIND_INJECT_OUT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_INJECT_OUT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_INJECT_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelLightPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kInject), layout, "voxel inject");
@@ -47,6 +48,7 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .buffer(v.index, gpu::use::BufferComputeRead)
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
+        .image(v.sides, gpu::use::ComputeReadWrite)  // two-sided voxels only
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .flush(cmd);
     gpu::bind(cmd, pipeline_);
@@ -60,11 +62,13 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_INJECT_LIST, v.list.handle())
         .storageBuffer(sh::BIND_INJECT_INDEX, v.index.handle())
         .storageImage(sh::BIND_INJECT_OUT_RADIANCE, v.radiance.view())
+        .storageImage(sh::BIND_INJECT_SIDES, v.sides.view())
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelLightPush push{
         glm::uvec4(s.lightCount, settings.normalWeighted ? 1u : 0u, uint32_t(settings.occlusion),
                    s.shadowsRendered ? 1u : 0u),
-        glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f, 0.0f)};
+        glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f,
+                  settings.keepSideReflection ? 1.0f : 0.0f)};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }

@@ -73,6 +73,7 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots) {
         {"voxel slot index", "uint32 buffer", n3 * 4},
         {"voxel attributes (13 channels per slot)", "R32_SFLOAT", uint64_t(slots) * sh::VOXEL_CHANNELS * 4},
         {"voxel direct light (per slot)", "R16G16B16A16_SFLOAT", uint64_t(slots) * 8},
+        {"voxel side light (per slot)", "R32G32B32A32_UINT", uint64_t(slots) * 16},
         {"radiance", "R16G16B16A16_SFLOAT", n3 * 8},
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
         {"occupied-voxel list", "uint32 buffer", voxelListBytes(slots)},
@@ -128,6 +129,9 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
     d.extent = {sh::VOXEL_SLOT_ROW, rows, 1};
     d.name = "voxel direct light";
     direct = gpu::Image(ctx, d);
+    d.format = VK_FORMAT_R32G32B32A32_UINT;
+    d.name = "voxel side light";
+    sides = gpu::Image(ctx, d);
     const bool ownDense = !radiance.handle();
     if (ownDense) {
         d.extent = {g.n, g.n, g.n};
@@ -188,12 +192,12 @@ void VoxelVolumes::setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gri
 }
 
 uint64_t VoxelVolumes::ownBytes() const {
-    const uint64_t sparse = index.size() + accum.memorySize() + direct.memorySize() + list.size();
+    const uint64_t sparse = index.size() + accum.memorySize() + direct.memorySize() + sides.memorySize() + list.size();
     return sparse + (sharesDense() ? 0 : dense_->bytes());
 }
 
 std::vector<const gpu::Image*> VoxelVolumes::all() const {
-    return {&accum, &direct, &radiance, &directional};
+    return {&accum, &direct, &sides, &radiance, &directional};
 }
 
 }  // namespace dvsgi::vxgi

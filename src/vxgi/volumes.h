@@ -88,7 +88,10 @@ public:
     uint32_t directionalMips;
     uint32_t slots;       // slot capacity (whole rows of VOXEL_SLOT_ROW)
     gpu::Image accum;     // R32_SFLOAT, ROW x rows x VOXEL_CHANNELS: summed attributes per slot
-    gpu::Image direct;    // RGBA16F, ROW x rows x 1: direct light + emission per slot, kept for the bounces
+    gpu::Image direct;    // RGBA16F, ROW x rows x 1: direct light + emission per slot, kept for the bounces; a = 1 + side code
+    // RGBA32UI, ROW x rows x 1: a two-sided voxel's light per side, four
+    // RGB9E5 values (lib/voxel_sides.glsl); other slots' texels are unused.
+    gpu::Image sides;
     gpu::Image& radiance;     // DenseVolumes::radiance
     gpu::Image& directional;  // DenseVolumes::directional
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid

@@ -1,5 +1,6 @@
 #include "vxgi/voxel_storage_io.h"
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -65,6 +66,23 @@ std::vector<glm::vec4> readDirectLight(const gpu::Context& ctx, const VoxelVolum
         for (int c = 0; c < 4; ++c) out[i][c] = glm::unpackHalf1x16(halves[size_t(slot) * 4 + size_t(c)]);
     }
     return out;
+}
+
+std::vector<glm::uvec4> readSideLight(const gpu::Context& ctx, const VoxelVolumes& v) {
+    const std::vector<uint32_t> index = readVoxelIndex(ctx, v);
+    const std::vector<uint32_t> words = readAs<uint32_t>(ctx, v.sides);
+    std::vector<glm::uvec4> out(index.size(), glm::uvec4(0u));
+    for (size_t i = 0; i < index.size(); ++i) {
+        const int64_t slot = slotOf(index[i]);
+        if (slot < 0) continue;
+        for (int c = 0; c < 4; ++c) out[i][c] = words[size_t(slot) * 4 + size_t(c)];
+    }
+    return out;
+}
+
+glm::vec3 unpackRgb9e5(uint32_t word) {
+    const float scale = std::ldexp(1.0f, int(word >> 27) - 24);
+    return glm::vec3(float(word & 511u), float((word >> 9) & 511u), float((word >> 18) & 511u)) * scale;
 }
 
 void uploadAttributes(const gpu::Context& ctx, const VoxelVolumes& v, const DenseAttributes& a) {

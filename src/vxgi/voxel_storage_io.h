@@ -38,6 +38,11 @@ std::vector<uint32_t> readVoxelIndex(const gpu::Context& ctx, const VoxelVolumes
 DenseAttributes readAttributes(const gpu::Context& ctx, const VoxelVolumes& volumes);
 // The per-slot direct light (RGBA, from RGBA16F) per grid voxel; empty voxels read zero.
 std::vector<glm::vec4> readDirectLight(const gpu::Context& ctx, const VoxelVolumes& volumes);
+// The per-slot side light (four packed RGB9E5 words, shaders/lib/voxel_sides.glsl)
+// per grid voxel; empty voxels read zero, one-sided ones whatever the slot held.
+std::vector<glm::uvec4> readSideLight(const gpu::Context& ctx, const VoxelVolumes& volumes);
+// One RGB9E5 word as VK_FORMAT_E5B9G9R9_UFLOAT_PACK32 defines it.
+glm::vec3 unpackRgb9e5(uint32_t word);
 // Gives every voxel with a fragment count > 0 a static slot (in x-fastest
 // order), uploads its sums, the index and the list with its counts and
 // dispatch arguments, as after a static voxelization. Direct light and

@@ -20,40 +20,6 @@ vxgi::GridSpec grid(uint32_t n) {
     return g;
 }
 
-// Directions in volume order: the axis and the sign of travel.
-constexpr int kAxis[6] = {0, 0, 1, 1, 2, 2};
-constexpr int kSign[6] = {-1, 1, -1, 1, -1, 1};
-
-// One level of direction `dir` from its source (the radiance volume, or the
-// same direction's previous level): per target voxel, the four child columns
-// along the axis of travel, each composited front (the child a ray travelling
-// that way enters first) over back, averaged.
-Rgba16Volume filterLevel(const Rgba16Volume& src, int dir) {
-    Rgba16Volume out;
-    out.n = std::max(src.n / 2, 1u);
-    out.texels.assign(size_t(out.n) * out.n * out.n, glm::vec4(0.0f));
-    const int axis = kAxis[dir];
-    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-    for (int z = 0; z < int(out.n); ++z)
-        for (int y = 0; y < int(out.n); ++y)
-            for (int x = 0; x < int(out.n); ++x) {
-                const glm::ivec3 base = glm::ivec3(x, y, z) * 2;
-                glm::vec4 sum(0.0f);
-                for (int a = 0; a < 2; ++a)
-                    for (int b = 0; b < 2; ++b) {
-                        glm::ivec3 lo = base, hi = base;
-                        lo[u] += a, lo[w] += b, hi[u] += a, hi[w] += b;
-                        hi[axis] += 1;
-                        // Travelling +axis enters the low child first.
-                        const glm::ivec3 front = kSign[dir] > 0 ? lo : hi, back = kSign[dir] > 0 ? hi : lo;
-                        const glm::vec4 f = src.at(front.x, front.y, front.z), k = src.at(back.x, back.y, back.z);
-                        sum += f + k * (1.0f - f.a);
-                    }
-                out.at(x, y, z) = sum * 0.25f;
-            }
-    return out;
-}
-
 Rgba16Volume randomRadiance(uint32_t n, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> rgb(0.0f, 8.0f), u01(0.0f, 1.0f);
@@ -112,10 +78,10 @@ void expectEveryLevelMatchesTheRule(const Rgba16Volume& radiance) {
             const Rgba16Volume got = readDirectional(volumes, uint32_t(dir), level);
             ASSERT_EQ(got.n, (kN / 2) >> level);
             // Level by level from the GPU's own previous level: isolates each dispatch.
-            failed += compareLevel(got, filterLevel(previousGpu, dir), dir, level, worstGpuChain);
+            failed += compareLevel(got, filterDirectionalLevel(previousGpu, dir), dir, level, worstGpuChain);
             // The whole chain on the host with fp16 rounding after each level:
             // catches a level reading the wrong source.
-            Rgba16Volume next = filterLevel(hostChain, dir);
+            Rgba16Volume next = filterDirectionalLevel(hostChain, dir);
             for (glm::vec4& t : next.texels) t = toHalf(t);
             hostChain = next;
             for (int z = 0; z < int(got.n); ++z)

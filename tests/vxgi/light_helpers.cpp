@@ -1,5 +1,6 @@
 #include "light_helpers.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include <glm/gtc/packing.hpp>
@@ -37,6 +38,32 @@ Rgba16Volume readRgba16(const gpu::Image& image, uint32_t mip) {
     EXPECT_EQ(bytes.size(), v.texels.size() * 8);
     for (size_t i = 0; i < v.texels.size(); ++i) v.texels[i] = halfTexel(bytes.data() + i * 8);
     return v;
+}
+
+Rgba16Volume filterDirectionalLevel(const Rgba16Volume& src, int dir) {
+    Rgba16Volume out;
+    out.n = std::max(src.n / 2, 1u);
+    out.texels.assign(size_t(out.n) * out.n * out.n, glm::vec4(0.0f));
+    const int axis = kAxis[dir];
+    const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    for (int z = 0; z < int(out.n); ++z)
+        for (int y = 0; y < int(out.n); ++y)
+            for (int x = 0; x < int(out.n); ++x) {
+                const glm::ivec3 base = glm::ivec3(x, y, z) * 2;
+                glm::vec4 sum(0.0f);
+                for (int a = 0; a < 2; ++a)
+                    for (int b = 0; b < 2; ++b) {
+                        glm::ivec3 lo = base, hi = base;
+                        lo[u] += a, lo[w] += b, hi[u] += a, hi[w] += b;
+                        hi[axis] += 1;
+                        // Travelling +axis enters the low child first.
+                        const glm::ivec3 front = kSign[dir] > 0 ? lo : hi, back = kSign[dir] > 0 ? hi : lo;
+                        const glm::vec4 f = src.at(front.x, front.y, front.z), k = src.at(back.x, back.y, back.z);
+                        sum += f + k * (1.0f - f.a);
+                    }
+                out.at(x, y, z) = sum * 0.25f;
+            }
+    return out;
 }
 
 Rgba16Volume readDirectional(const vxgi::VoxelVolumes& volumes, uint32_t dir, uint32_t mip) {

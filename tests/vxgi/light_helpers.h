@@ -50,6 +50,16 @@ AccumVolume readAccum(const vxgi::VoxelVolumes& volumes);
 // The per-slot direct light per grid voxel (empty voxels zero).
 Rgba16Volume readDirect(const vxgi::VoxelVolumes& volumes);
 
+// Directions in volume order: the axis and the sign of travel.
+constexpr int kAxis[6] = {0, 0, 1, 1, 2, 2};
+constexpr int kSign[6] = {-1, 1, -1, 1, -1, 1};
+
+// One level of direction `dir` from its source (the radiance volume, or the
+// same direction's previous level): per target voxel, the four child columns
+// along the axis of travel, each composited front (the child a ray travelling
+// that way enters first) over back, averaged.
+Rgba16Volume filterDirectionalLevel(const Rgba16Volume& src, int dir);
+
 // Inject's shadow-map binding must be valid even when no light samples it.
 struct UnusedShadowMap {
     UnusedShadowMap();
