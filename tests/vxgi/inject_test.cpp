@@ -263,7 +263,8 @@ class InjectDirect : public GpuTest {};
 // Runs InjectPass over the accum volume with the given lights (occlusion off)
 // and returns the `direct` volume.
 Rgba16Volume inject(const vxgi::VoxelVolumes& volumes, const vxgi::InjectPass& pass,
-                    const std::vector<scene::PlacedLight>& lights, bool normalWeighted) {
+                    const std::vector<scene::PlacedLight>& lights, bool normalWeighted,
+                    bool keepSideReflection = false) {
     const gpu::Context& ctx = context();
     scene::Bounds bounds;
     bounds.min = glm::vec3(-1.0f);
@@ -282,6 +283,7 @@ Rgba16Volume inject(const vxgi::VoxelVolumes& volumes, const vxgi::InjectPass& p
     vxgi::VoxelLightSettings settings;
     settings.normalWeighted = normalWeighted;
     settings.occlusion = vxgi::Occlusion::None;
+    settings.keepSideReflection = keepSideReflection;
     gpu::Tracker tracker = volumeTracker(volumes);
     ctx.submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, inputs, settings, nullptr); });
     return readDirect(volumes);
@@ -504,6 +506,41 @@ TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
     std::printf("  voxels: %d one-sided, %d / %d / %d two-sided along x / y / z, %d along several axes\n", counts[0],
                 counts[1], counts[2], counts[3], counts[4]);
     for (int code = 0; code < 5; ++code) EXPECT_GT(counts[code], 20) << "side code " << code;
+}
+
+// A feedback frame's bounce blends a two-sided voxel's reflected light with
+// last frame's, so inject keeps the side light's reflected words then, and
+// zeroes them otherwise (K bounces start from none).
+TEST_F(InjectDirect, SideReflectionIsKeptOnlyForFeedbackFrames) {
+    const std::vector<SyntheticVoxel> voxels = makeVoxels(13);
+    const AccumVolume accum = toAccum(voxels);
+    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
+    uploadAccum(volumes, accum);
+    const vxgi::InjectPass pass(context());
+    std::vector<glm::uvec4> marked(size_t(volumes.slots), glm::uvec4(0u));
+    for (size_t i = 0; i < marked.size(); ++i) marked[i] = glm::uvec4(0u, 0u, 0x1000u + uint32_t(i), 0x2000u + uint32_t(i));
+    for (bool keep : {true, false}) {
+        gpu::uploadImage(context(), volumes.sides, marked.data(), marked.size() * sizeof(glm::uvec4),
+                         gpu::use::ComputeReadWrite);
+        inject(volumes, pass, {sun()}, true, keep);
+        const std::vector<glm::uvec4> sides = vxgi::readSideLight(context(), volumes);
+        const std::vector<uint32_t> index = vxgi::readVoxelIndex(context(), volumes);
+        int twoSided = 0, failed = 0;
+        for (size_t i = 0; i < index.size(); ++i) {
+            if (voxels[i].normals.empty()) continue;
+            const int z = int(i / (kN * kN)), y = int(i / kN % kN), x = int(i % kN);
+            const uint32_t code = sideCode(channels(accum, x, y, z));
+            if (code < 1 || code > 3) continue;
+            ++twoSided;
+            const uint32_t slot = sh::indexSlot(index[i]) - 1;
+            const glm::uvec2 want = keep ? glm::uvec2(marked[slot].z, marked[slot].w) : glm::uvec2(0u);
+            if ((sides[i].z != want.x || sides[i].w != want.y) && failed++ < 3)
+                ADD_FAILURE() << (keep ? "kept" : "zeroed") << ": voxel " << x << " " << y << " " << z << " holds "
+                              << sides[i].z << " " << sides[i].w << ", want " << want.x << " " << want.y;
+        }
+        EXPECT_GT(twoSided, 100);
+        EXPECT_EQ(failed, 0) << (keep ? "kept" : "zeroed");
+    }
 }
 
 }  // namespace
