@@ -53,7 +53,7 @@ vec3 childSide[8][2];
 // The side code of voxel p and its slot + 1 (0: empty).
 uint sideCodeAt(ivec3 p, out uint slot) {
     slot = voxelSlotAt(p);
-    return slot == 0u ? SIDE_ONE : uint(imageLoad(direct, slotTexel(slot - 1u, 0u)).a + 0.5) - 1u;
+    return slot == 0u ? SIDE_ONE : sideCodeOf(imageLoad(direct, slotTexel(slot - 1u, 0u)));
 }
 
 void loadChildren(ivec3 base) {
@@ -62,8 +62,7 @@ void loadChildren(ivec3 base) {
         children[i] = imageLoad(source, p);
         childAxis[i] = -1;
         uint slot;
-        // Only voxels with TWO_SIDED_OPACITY hold another code.
-        uint code = children[i].a > 0.0 && children[i].a < 1.0 ? sideCodeAt(p, slot) : SIDE_ONE;
+        uint code = marksTwoSided(children[i].a) ? sideCodeAt(p, slot) : SIDE_ONE;
         if (code == SIDE_ONE) continue;
         children[i] = vec4(0.0, 0.0, 0.0, 1.0);
         if (code == SIDE_SEVERAL) continue;  // where thin walls meet no side is the one a ray meets
@@ -112,13 +111,12 @@ void main() {
     uint entry = listInvocation();
     if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
     ivec3 voxel = listVoxel(list.entries[entry]);
-    if (imageLoad(direct, slotTexel(entry, 0u)).a < 1.5) return;  // one-sided (alpha 1 + code)
+    if (sideCodeOf(imageLoad(direct, slotTexel(entry, 0u))) == SIDE_ONE) return;
     ivec3 v = voxel / 2;
     // The cell's first two-sided voxel (x fastest) owns it.
     int self = (voxel.x & 1) + 2 * (voxel.y & 1) + 4 * (voxel.z & 1);
     for (int i = 0; i < self; ++i) {
-        float a = imageLoad(source, v * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2)).a;
-        if (a > 0.0 && a < 1.0) return;
+        if (marksTwoSided(imageLoad(source, v * 2 + ivec3(i & 1, (i >> 1) & 1, i >> 2)).a)) return;
     }
     loadChildren(v * 2);
     composite(v, int(pc.sizes.x));

@@ -76,7 +76,7 @@ vec3 blendWithHistory(ivec3 v, uint slot, vec3 value, float sideTag, out bool si
 
 vec4 bounced(ivec3 v, uint slot) {
     vec4 d = imageLoad(direct, slotTexel(slot, 0u));
-    uint code = uint(d.a + 0.5) - 1u;
+    uint code = sideCodeOf(d);
     vec3 pos, neg;
     voxelNormalWeights(slot, pos, neg);
     vec3 n = voxelNormal(slot);

@@ -96,7 +96,7 @@ void main() {
                 side[k] += albedo / PI * E * cosine * visibility(light, mode, centre + sideN[k] * (0.5 * s), sideN[k], L, dist);
         }
     }
-    imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, 1.0 + float(code)));
+    imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, sideCodeAlpha(code)));
     imageStore(outRadiance, v, vec4(radiance, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY));
     if (axis < 0) return;
     // The reflected light stays for a feedback frame's bounce to blend with;

@@ -14,6 +14,15 @@ uint sideCode(vec3 pos, vec3 neg) {
     return both.x ? 1u : (both.y ? 2u : 3u);
 }
 
+// A slot's direct light keeps its side code in alpha, as 1 + code, so that
+// one-sided voxels keep alpha 1.
+float sideCodeAlpha(uint code) { return 1.0 + float(code); }
+uint sideCodeOf(vec4 direct) { return uint(direct.a + 0.5) - 1u; }
+
+// Whether a radiance texel's opacity is TWO_SIDED_OPACITY's (occupied voxels
+// have 1, empty ones 0): a voxel whose side code is not SIDE_ONE.
+bool marksTwoSided(float opacity) { return opacity > 0.0 && opacity < 1.0; }
+
 // Shared-exponent RGB (9-bit mantissas, 5-bit exponent, bias 15), as
 // VK_FORMAT_E5B9G9R9_UFLOAT_PACK32 stores it; negative inputs become 0.
 uint packRgb9e5(vec3 rgb) {
