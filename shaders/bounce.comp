@@ -11,8 +11,8 @@
 // L_direct + T L_direct + ... ; reading the previous frame's volumes instead
 // (feedback) adds one bounce per frame at the cost of one. A two-sided voxel
 // (lib/voxel_sides.glsl) gathers over the hemisphere of the side its weights
-// favour, which its radiance keeps, and with one wide cone over the other's;
-// both go to its side light.
+// favour with the six cones and over the other's with one wide cone; both go
+// to its side light, and its radiance texel shows the darker side.
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
@@ -88,7 +88,7 @@ vec4 bounced(ivec3 v, uint slot) {
     }
     bool twoSided = code >= 1u && code <= 3u;
     int axis = twoSided ? int(code) - 1 : 0;
-    // A two-sided voxel's radiance takes the side its weights favour.
+    // A two-sided voxel's six cones gather for the side its weights favour.
     int strong = twoSided && pos[axis] < neg[axis] ? 1 : 0;
     if (twoSided) {
         n = vec3(0.0);
@@ -110,6 +110,7 @@ vec4 bounced(ivec3 v, uint slot) {
         other = albedo * traceCone(o, m, s * pc.cone.surface.z, m, 1.7320508, pc.cone, false).rgb;
     }
     bool blended = false;
+    vec3 shown = d.rgb;
     float sideTag = twoSided ? float(1 + 2 * axis + strong) : 0.0;
     if (pc.blend.x != 0u) reflected = blendWithHistory(v, slot, reflected, sideTag, blended);
     if (twoSided) {
@@ -121,8 +122,14 @@ vec4 bounced(ivec3 v, uint slot) {
         }
         vec3 side0 = strong == 0 ? reflected : other, side1 = strong == 0 ? other : reflected;
         imageStore(sides, texel, uvec4(t.xy, packRgb9e5(side0), packRgb9e5(side1)));
+        // The radiance texel shows the darker side, as inject.comp writes it.
+        shown = min(unpackRgb9e5(t.x) + side0, unpackRgb9e5(t.y) + side1);
+    } else if (code == SIDE_ONE) {
+        shown += reflected;
+    } else {
+        shown = vec3(0.0);
     }
-    return vec4(d.rgb + reflected, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY);
+    return vec4(shown, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY);
 }
 
 void main() {

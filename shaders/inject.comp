@@ -11,7 +11,11 @@
 // (kept for the bounces; alpha 1 + its side code) and to the radiance volume,
 // alpha = opacity (1 for occupied voxels, TWO_SIDED_OPACITY for those with
 // another side code). A two-sided voxel
-// (lib/voxel_sides.glsl) is also lit side by side into its side light.
+// (lib/voxel_sides.glsl) is also lit side by side into its side light, and
+// its radiance texel shows its darker side (black if it is two-sided along
+// several axes): the texel is one value for every way a cone reads it, and
+// a sunlit side shown there glowed through the wall to pixels beside it
+// (cones read the sides themselves where they can: lib/cone_trace.glsl).
 // One invocation per occupied voxel (an entry of the list); empty voxels keep
 // the zero that clears left.
 layout(local_size_x = VOXEL_LIST_GROUP) in;
@@ -97,7 +101,8 @@ void main() {
         }
     }
     imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, sideCodeAlpha(code)));
-    imageStore(outRadiance, v, vec4(radiance, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY));
+    vec3 shown = code == SIDE_ONE ? radiance : (axis >= 0 ? min(side[0], side[1]) : vec3(0.0));
+    imageStore(outRadiance, v, vec4(shown, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY));
     if (axis < 0) return;
     // The reflected light stays for a feedback frame's bounce to blend with;
     // otherwise the bounces start from none.

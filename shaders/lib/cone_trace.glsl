@@ -7,6 +7,9 @@
 // volumes stacked along z), starting at level CONE_FIRST_LEVEL (default 0).
 
 #include "lib/math.glsl"
+#ifdef CONE_USE_RADIANCE_VOLUME
+#include "lib/voxel_sides.glsl"
+#endif
 
 #ifdef DVSGI_CLIPMAP
 #ifndef CONE_FIRST_LEVEL
@@ -30,6 +33,8 @@ vec4 directionalAt(int l, vec3 uvw, float lod) {
 }
 #ifdef CONE_USE_RADIANCE_VOLUME
 vec4 radianceAt(int l, vec3 uvw) { return atlasSample(radianceAtlas, l, uvw, float(traceGrid(l).dims.x), 0.0); }
+// The opacity of level l's voxel that holds uvw, unfiltered.
+float radianceOpacityAt(int l, vec3 uvw, float size) { return radianceAt(l, (floor(uvw * size) + 0.5) / size).a; }
 #endif
 #else
 #define CONE_FIRST_LEVEL 0
@@ -37,6 +42,10 @@ VoxelGrid traceGrid(int l) { return grid; }
 vec4 directionalAt(int l, vec3 uvw, float lod) { return textureLod(directional, uvw, lod); }
 #ifdef CONE_USE_RADIANCE_VOLUME
 vec4 radianceAt(int l, vec3 uvw) { return textureLod(radianceVolume, uvw, 0.0); }
+// The opacity of the voxel that holds uvw, unfiltered.
+float radianceOpacityAt(int l, vec3 uvw, float size) {
+    return texelFetch(radianceVolume, clamp(ivec3(floor(uvw * size)), ivec3(0), ivec3(int(size) - 1)), 0).a;
+}
 #endif
 #endif
 
@@ -107,19 +116,30 @@ void tapDirectional(int l, uint face, int axis, vec3 uvw, float lod, float w, in
 }
 
 #ifdef CONE_USE_RADIANCE_VOLUME
-// The radiance volume (one-voxel cells, the same opacity every way) sampled
-// as the directional volumes are, along the axis the cone travels most:
-// trilinear opacity across a one-voxel surface is a tent whose step-corrected
-// transmittance is about 0.1, so narrow shadow cones saw through single-layer
-// occluders (umbra 0.10 instead of 0).
-vec4 sampleRadianceVolume(int l, vec3 uvw, vec3 dir) {
+
+// A sample finer than directional level 0's cells (footprint `level` < 1 of
+// one-voxel cells): the radiance volume (one-voxel cells, the same opacity
+// every way) sampled as the directional volumes are, along the axis the cone
+// travels most (trilinear opacity across a one-voxel surface is a tent whose
+// step-corrected transmittance is about 0.1, so narrow shadow cones saw
+// through single-layer occluders: umbra 0.10 instead of 0), blended toward
+// the directional sample `directional` as the footprint grows. Where either
+// of the two voxels read along the axis is two-sided (lib/voxel_sides.glsl),
+// the directional sample alone: its level 0 shows a thin wall's sides by the
+// way the cone travels, where the radiance volume's one value per voxel
+// cannot (it holds the darker side, so that its neighbours' trilinear
+// interpolation shows no sunlit side through a wall either).
+vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
     vec3 a = abs(dir);
     int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    float size = float(traceGrid(l).dims.x);
     vec3 p0, p1;
-    float f = cellsAlongAxis(uvw, axis, float(traceGrid(l).dims.x), p0, p1);
+    float f = cellsAlongAxis(uvw, axis, size, p0, p1);
+    if (marksTwoSided(radianceOpacityAt(l, p0, size)) || marksTwoSided(radianceOpacityAt(l, p1, size)))
+        return directional;
     vec4 acc = vec4(0.0);
     addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);
-    return premultiplied(acc);
+    return mix(premultiplied(acc), directional, max(level, 0.0));
 }
 #endif
 
@@ -220,7 +240,7 @@ vec4 sampleLevel(int l, vec3 p, vec3 dir, float d, bool blendLevels) {
     vec3 uvw = (p - g.originSize.xyz) / (g.originSize.w * float(g.dims.x));
     vec4 smp = sampleDirectional(l, uvw, dir, clamp(level - 1.0, 0.0, float(g.dims.z) - 1.0), blendLevels);
 #ifdef CONE_USE_RADIANCE_VOLUME
-    if (level < 1.0) smp = mix(sampleRadianceVolume(l, uvw, dir), smp, max(level, 0.0));
+    if (level < 1.0) smp = sampleNear(l, uvw, dir, smp, level);
 #endif
     return smp;
 }
@@ -286,7 +306,7 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         // Directional level 0 voxels are two voxels wide.
         vec4 smp = sampleDirectional(0, uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels);
 #ifdef CONE_USE_RADIANCE_VOLUME
-        if (level < 1.0) smp = mix(sampleRadianceVolume(0, uvw, dir), smp, level);
+        if (level < 1.0) smp = sampleNear(0, uvw, dir, smp, level);
 #endif
 #endif
         // Steps follow the cone's diameter but never exceed the sampled cell,

@@ -2,6 +2,8 @@
 // code a voxel gets, and the per-slot side light, packed four RGB9E5 values
 // to a texel: x, y the +axis and -axis sides' direct light (+ emission),
 // z, w the light each side reflected in the last bounce.
+#ifndef DVSGI_VOXEL_SIDES_GLSL
+#define DVSGI_VOXEL_SIDES_GLSL
 
 // The side code of normal weights pos / neg (SIDE_*): the axis on which both
 // signed weights reach the threshold, SIDE_SEVERAL if more than one does.
@@ -43,3 +45,4 @@ vec3 unpackRgb9e5(uint v) {
     uvec3 q = uvec3(v, v >> 9, v >> 18) & 511u;
     return vec3(q) * exp2(float(int(v >> 27) - 24));
 }
+#endif
