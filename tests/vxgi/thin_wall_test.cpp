@@ -34,6 +34,15 @@ struct Probes {
     double inside = 0.0, outside = 0.0, insideDirect = 0.0, outsideDirect = 0.0;
 };
 
+// A directional light of 3 W/m^2 travelling along `direction`.
+void addSun(scene::Scene& s, glm::vec3 direction) {
+    scene::Light sun;
+    sun.name = "sun";
+    sun.type = scene::LightType::Directional;
+    sun.intensity = 3.0f;
+    addLight(s, sun, glm::vec3(0.0f, 0.9f, 0.0f), glm::normalize(direction));
+}
+
 scene::Scene thinWallRoom(uint32_t n) {
     const float v = 2.0f / float(n);
     scene::Scene s;
@@ -52,11 +61,7 @@ scene::Scene thinWallRoom(uint32_t n) {
     addBox(s, grey, glm::vec3(kProbe), glm::vec3(0.7f, -0.55f, 0.0f), false);  // outside, +X side
     addBox(s, grey, glm::vec3(0.95f, 0.4f * v, 0.95f), glm::vec3(0.0f, -0.8f, 0.0f), false);  // ground
     addTopDownCamera(s, 0.9f, glm::radians(60.0f));
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.intensity = 3.0f;
-    addLight(s, sun, glm::vec3(0.0f, 0.9f, 0.0f), glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f)));
+    addSun(s, glm::vec3(-0.4f, -1.0f, -0.3f));
     return s;
 }
 
@@ -203,11 +208,7 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
     // Both faces of the wall in the voxel layer x in [0, v).
     addBox(s, grey, glm::vec3(0.4f * v, 0.3f, 0.6f), glm::vec3(0.5f * v, top + 0.3f, 0.0f), false);
     addTopDownCamera(s, 0.6f, glm::radians(70.0f));
-    scene::Light sun;
-    sun.name = "sun";
-    sun.type = scene::LightType::Directional;
-    sun.intensity = 3.0f;
-    addLight(s, sun, glm::vec3(0.0f, 0.9f, 0.0f), glm::normalize(glm::vec3(-1.0f, -1.0f, -0.2f)));
+    addSun(s, glm::vec3(-1.0f, -1.0f, -0.2f));
     const render::RenderSettings rs = pixelSettings(n, 1);
     const image::ImageRGBA32F img = render(s, rs);
     Bands b;
