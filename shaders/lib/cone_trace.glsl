@@ -33,8 +33,13 @@ vec4 directionalAt(int l, vec3 uvw, float lod) {
 }
 #ifdef CONE_USE_RADIANCE_VOLUME
 vec4 radianceAt(int l, vec3 uvw) { return atlasSample(radianceAtlas, l, uvw, float(traceGrid(l).dims.x), 0.0); }
-// The opacity of level l's voxel that holds uvw, unfiltered.
-float radianceOpacityAt(int l, vec3 uvw, float size) { return radianceAt(l, (floor(uvw * size) + 0.5) / size).a; }
+// The opacity of level l's voxel that holds uvw, unfiltered (0 outside the level).
+float radianceOpacityAt(int l, vec3 uvw, float size) {
+    ivec3 c = ivec3(floor(uvw * size));
+    int n = int(size);
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(n)))) return 0.0;
+    return texelFetch(radianceAtlas, ivec3(c.xy, l * n + c.z), 0).a;
+}
 #endif
 #else
 #define CONE_FIRST_LEVEL 0
