@@ -21,7 +21,7 @@ namespace dvsgi::render {
 
 struct TemporalSettings {
     bool enabled = true;   // off: the gather's term goes to the composite as it is
-    float minAlpha = 0.1f; // smallest weight of this frame's term (reached after 1/minAlpha - 1 frames)
+    float minAlpha = 0.05f; // smallest weight of this frame's term (reached after 1/minAlpha - 1 frames)
 };
 
 struct TemporalIndirectInputs {
