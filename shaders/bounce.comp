@@ -74,7 +74,11 @@ vec3 blendWithHistory(ivec3 v, uint slot, vec3 value, float sideTag, out bool si
     return value;
 }
 
-vec4 bounced(ivec3 v, uint slot) {
+// `sideChange`: for a two-sided voxel, the convergence statistics of both
+// sides (summed |luminance change| of direct + reflected, and the luminance
+// after), since its radiance texel shows only the darker one; x < 0 otherwise.
+vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
+    sideChange = vec2(-1.0);
     vec4 d = imageLoad(direct, slotTexel(slot, 0u));
     uint code = sideCodeOf(d);
     vec3 pos, neg;
@@ -122,8 +126,13 @@ vec4 bounced(ivec3 v, uint slot) {
         }
         vec3 side0 = strong == 0 ? reflected : other, side1 = strong == 0 ? other : reflected;
         imageStore(sides, texel, uvec4(t.xy, packRgb9e5(side0), packRgb9e5(side1)));
+        vec3 lit0 = unpackRgb9e5(t.x), lit1 = unpackRgb9e5(t.y);
         // The radiance texel shows the darker side, as inject.comp writes it.
-        shown = min(unpackRgb9e5(t.x) + side0, unpackRgb9e5(t.y) + side1);
+        shown = min(lit0 + side0, lit1 + side1);
+        float after0 = luminance(lit0 + side0), after1 = luminance(lit1 + side1);
+        sideChange = vec2(abs(after0 - luminance(lit0 + unpackRgb9e5(t.z))) +
+                              abs(after1 - luminance(lit1 + unpackRgb9e5(t.w))),
+                          after0 + after1);
     } else if (code == SIDE_ONE) {
         shown += reflected;
     } else {
@@ -137,8 +146,11 @@ void main() {
     vec2 change = vec2(0.0);
     if (entry < list.header.counts.x && list.entries[entry] != VOXEL_LIST_FREE) {
         ivec3 v = listVoxel(list.entries[entry]);
-        vec4 r = bounced(v, entry);
-        if (pc.flags.x != 0u && r.a > 0.0) {
+        vec2 sideChange;
+        vec4 r = bounced(v, entry, sideChange);
+        if (pc.flags.x != 0u && sideChange.x >= 0.0) {
+            change = sideChange;
+        } else if (pc.flags.x != 0u && r.a > 0.0) {
             float before = luminance(imageLoad(outRadiance, v).rgb), after = luminance(r.rgb);
             change = vec2(abs(after - before), after);
         }

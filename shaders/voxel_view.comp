@@ -8,6 +8,8 @@
 // Voxel debug view: marches each camera ray through the chosen grid (DDA,
 // Amanatides & Woo) and shows the first occupied voxel's value, so voxels
 // appear as cubes. Faces are shaded slightly by their axis to read the shapes.
+// The radiance view shows a two-sided voxel (a wall thinner than a voxel) by
+// the side the ray meets, which its radiance texel (the darker side) cannot.
 layout(local_size_x = VIEW_GROUP, local_size_y = VIEW_GROUP) in;
 
 layout(set = 0, binding = BIND_VIEW_GRID) uniform Grid { VoxelGrid grid; };
@@ -16,12 +18,15 @@ layout(set = 0, binding = BIND_VIEW_ACCUM, r32f) uniform readonly image3D accum;
 layout(set = 0, binding = BIND_VIEW_RADIANCE, rgba16f) uniform readonly image3D radiance;
 layout(set = 0, binding = BIND_VIEW_DIRECTIONAL, rgba16f) uniform readonly image3D directional;
 layout(set = 0, binding = BIND_VIEW_OUT, rgba32f) uniform writeonly image2D outImage;
+layout(set = 0, binding = BIND_VIEW_DIRECT, rgba16f) uniform readonly image3D direct;
+layout(set = 0, binding = BIND_VIEW_SIDES, rgba32ui) uniform readonly uimage3D sides;
 VOXEL_INDEX_BLOCK(BIND_VIEW_INDEX, readonly);
 VOXEL_LIST_BLOCK(BIND_VIEW_LIST, readonly);
 layout(push_constant) uniform Push { VoxelViewPush pc; };
 
 #include "lib/voxel_attributes.glsl"
 #include "lib/voxel_index.glsl"
+#include "lib/voxel_sides.glsl"
 
 vec4 directionalAt(ivec3 v, int size) { return imageLoad(directional, directionalTexel(pc.direction.x, v, size)); }
 
@@ -31,12 +36,21 @@ bool occupied(ivec3 v, uint mode, int size) {
     return voxelOccupied(v);
 }
 
-vec3 value(ivec3 v, uint mode, int size) {
+// Radiance as a ray travelling along rd sees the voxel.
+vec3 radianceSeen(ivec3 v, uint slot, vec3 rd) {
+    uint code = sideCodeOf(imageLoad(direct, slotTexel(slot, 0u)));
+    if (code < 1u || code > 3u) return imageLoad(radiance, v).rgb;
+    // Side 0 faces +axis; a ray travelling toward +axis meets side 1.
+    uvec4 t = imageLoad(sides, slotTexel(slot, 0u));
+    return rd[code - 1u] > 0.0 ? unpackRgb9e5(t.y) + unpackRgb9e5(t.w) : unpackRgb9e5(t.x) + unpackRgb9e5(t.z);
+}
+
+vec3 value(ivec3 v, uint mode, int size, vec3 rd) {
     uint slot = voxelSlotAt(v) - 1u;  // occupied() held
     if (mode == VIEW_ALBEDO) return voxelAlbedo(slot);
     if (mode == VIEW_NORMAL) return voxelNormal(slot) * 0.5 + 0.5;
     if (mode == VIEW_EMISSION) return voxelEmission(slot);
-    if (mode == VIEW_RADIANCE) return imageLoad(radiance, v).rgb;
+    if (mode == VIEW_RADIANCE) return radianceSeen(v, slot, rd);
     if (mode == VIEW_AGE) return slot < list.header.counts.y ? vec3(0.30, 0.45, 0.80) : vec3(1.0, 0.55, 0.10);
     return directionalAt(v, size).rgb;
 }
@@ -71,7 +85,7 @@ void main() {
         }
         for (int i = 0; i < 3 * size; ++i) {
             if (occupied(v, mode, size)) {
-                color = value(v, mode, size) * (axis == 0 ? 0.8 : (axis == 1 ? 1.0 : 0.9));
+                color = value(v, mode, size, rd) * (axis == 0 ? 0.8 : (axis == 1 ? 1.0 : 0.9));
                 break;
             }
             if (tMax.x < tMax.y && tMax.x < tMax.z) { v.x += stepDir.x; tMax.x += tDelta.x; axis = 0; }

@@ -32,6 +32,10 @@ DVSGI_CONST(uint, BIND_VIEW_DIRECTIONAL, 4);  // the directional volumes' atlas 
 DVSGI_CONST(uint, BIND_VIEW_OUT, 5);
 DVSGI_CONST(uint, BIND_VIEW_INDEX, 6);
 DVSGI_CONST(uint, BIND_VIEW_LIST, 7);  // the occupied-voxel list (VIEW_AGE reads its header)
+// VIEW_RADIANCE of a two-sided voxel shows the side facing the camera: its side
+// code (in the voxel direct light's alpha) and its sides' light (lib/voxel_sides.glsl).
+DVSGI_CONST(uint, BIND_VIEW_DIRECT, 8);
+DVSGI_CONST(uint, BIND_VIEW_SIDES, 9);
 
 DVSGI_CONST(uint, VIEW_GROUP, 8);
 

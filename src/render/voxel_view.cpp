@@ -42,7 +42,9 @@ VoxelViewPass::VoxelViewPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_VIEW_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_VIEW_DIRECTIONAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_VIEW_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_VIEW_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                       {sh::BIND_VIEW_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VIEW_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_VIEW_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelViewPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "voxel view");
@@ -54,6 +56,7 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
     gpu::GpuTimerScope timer(timers, cmd, "voxel view");
     tracker.image(v.accum, gpu::use::ComputeRead).buffer(v.index, gpu::use::BufferComputeRead).image(v.radiance, gpu::use::ComputeRead);
     tracker.image(v.directional, gpu::use::ComputeRead).buffer(v.list, gpu::use::BufferComputeRead);
+    tracker.image(v.direct, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);
     tracker.image(output, gpu::use::ComputeWrite, true).flush(cmd);
     const uint32_t mip = std::min(view.mip, v.directionalMips - 1);
     const uint32_t w = output.desc().extent.width, h = output.desc().extent.height;
@@ -67,6 +70,8 @@ void VoxelViewPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const vxg
         .storageImage(sh::BIND_VIEW_DIRECTIONAL, v.directional.mipView(mip))
         .storageImage(sh::BIND_VIEW_OUT, output.view())
         .storageBuffer(sh::BIND_VIEW_LIST, v.list.handle())
+        .storageImage(sh::BIND_VIEW_DIRECT, v.direct.view())
+        .storageImage(sh::BIND_VIEW_SIDES, v.sides.view())
         .push(ctx_, cmd, pipeline_);
     const sh::VoxelViewPush push{glm::uvec4(shaderMode(view.mode), mip, w, h),
                                  glm::uvec4(std::min(view.direction, sh::DIRECTIONAL_VOLUMES - 1), 0u, 0u, 0u)};

@@ -234,6 +234,44 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
     EXPECT_LT(darkNear / darkFar, 1.5);  // measured 1.29
 }
 
+// The voxel debug view (--view voxels:radiance) of a thin wall lit by the sun
+// on one side, seen from either side, no bounce: the sunlit side shows
+// rho / pi E cos(theta) (times the view's 0.8 shade for x faces), the other
+// side black. The radiance texel holds the darker side (black here), so a
+// view that showed the texel showed both sides black.
+TEST_F(ThinWallPixels, VoxelViewShowsTheSideFacingTheCamera) {
+    constexpr uint32_t n = 64;
+    const float v = 2.0f / float(n);
+    constexpr float kRho = 0.8f;
+    scene::Scene s;
+    const int grey = addMaterial(s, glm::vec3(kRho));
+    // Both faces of the wall in the voxel layer x in [0, v).
+    addBox(s, grey, glm::vec3(0.4f * v, 0.4f, 0.4f), glm::vec3(0.5f * v, 0.0f, 0.0f), false);
+    const glm::vec3 sunDir(-1.0f, -0.3f, -0.2f);
+    addSun(s, sunDir);
+    addTopDownCamera(s, 0.0f, glm::radians(40.0f));
+    render::RenderSettings rs = pixelSettings(n, 0);
+    rs.width = rs.height = 32;
+    rs.view.mode = render::ViewMode::VoxelRadiance;
+    // The mean over the middle 16 x 16 pixels (all on the wall) seen from x.
+    auto seenFrom = [&](float x) {
+        scene::Node& cam = s.nodes.back();
+        cam.translation = glm::vec3(x, 0.0f, 0.0f);
+        cam.rotation = glm::angleAxis(glm::half_pi<float>() * (x > 0.0f ? 1.0f : -1.0f), glm::vec3(0, 1, 0));
+        const image::ImageRGBA32F img = render(s, rs);
+        double sum = 0.0;
+        for (uint32_t y = 8; y < 24; ++y)
+            for (uint32_t px = 8; px < 24; ++px) sum += img.rgba[(size_t(y) * img.width + px) * 4];
+        return sum / 256.0;
+    };
+    const double sunlit = seenFrom(0.9f), shadowed = seenFrom(-0.9f);
+    const double want = 0.8 * kRho / glm::pi<double>() * 3.0 * -glm::normalize(sunDir).x;
+    std::printf("  voxel view of a thin wall: sunlit side %.4f (rho/pi E cos x 0.8 = %.4f), shadowed side %.4f\n",
+                sunlit, want, shadowed);
+    EXPECT_NEAR(sunlit / want, 1.0, 0.02);
+    EXPECT_LT(shadowed, 1e-3);
+}
+
 }  // namespace
 }  // namespace dvsgi::test
 
