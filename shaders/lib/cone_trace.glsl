@@ -140,8 +140,15 @@ vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
     float size = float(traceGrid(l).dims.x);
     vec3 p0, p1;
     float f = cellsAlongAxis(uvw, axis, size, p0, p1);
-    if (marksTwoSided(radianceOpacityAt(l, p0, size)) || marksTwoSided(radianceOpacityAt(l, p1, size)))
-        return directional;
+    if (marksTwoSided(radianceOpacityAt(l, p0, size)) || marksTwoSided(radianceOpacityAt(l, p1, size))) {
+        // Level 0's cells are two voxels deep and the caller corrects the
+        // opacity for a slab as deep as the footprint (2^level voxels): take
+        // the cells' optical depth per that depth, or it would count twice.
+        float a = clamp(directional.a, 0.0, 0.9999);
+        if (a <= 1e-6) return vec4(0.0);
+        float af = 1.0 - pow(1.0 - a, exp2(max(level, 0.0) - 1.0));
+        return vec4(directional.rgb * (af / a), af);
+    }
     vec4 acc = vec4(0.0);
     addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);
     return mix(premultiplied(acc), directional, max(level, 0.0));
