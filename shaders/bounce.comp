@@ -124,8 +124,11 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
             vec3 before = unpackRgb9e5(strong == 0 ? t.w : t.z);
             other = before + uintBitsToFloat(pc.blend.z) * (other - before);
         }
-        vec3 side0 = strong == 0 ? reflected : other, side1 = strong == 0 ? other : reflected;
-        imageStore(sides, texel, uvec4(t.xy, packRgb9e5(side0), packRgb9e5(side1)));
+        uint packed0 = packRgb9e5(strong == 0 ? reflected : other);
+        uint packed1 = packRgb9e5(strong == 0 ? other : reflected);
+        imageStore(sides, texel, uvec4(t.xy, packed0, packed1));
+        // As stored (RGB9E5), so that a side that no longer changes counts no change.
+        vec3 side0 = unpackRgb9e5(packed0), side1 = unpackRgb9e5(packed1);
         vec3 lit0 = unpackRgb9e5(t.x), lit1 = unpackRgb9e5(t.y);
         // The radiance texel shows the darker side, as inject.comp writes it.
         shown = min(lit0 + side0, lit1 + side1);

@@ -133,7 +133,8 @@ void tapDirectional(int l, uint face, int axis, vec3 uvw, float lod, float w, in
 // the directional sample alone: its level 0 shows a thin wall's sides by the
 // way the cone travels, where the radiance volume's one value per voxel
 // cannot (it holds the darker side, so that its neighbours' trilinear
-// interpolation shows no sunlit side through a wall either).
+// interpolation shows no sunlit side through a wall either); its opacity is
+// then taken per the footprint's depth, as the caller's step correction assumes.
 vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
     vec3 a = abs(dir);
     int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
@@ -144,10 +145,10 @@ vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
         // Level 0's cells are two voxels deep and the caller corrects the
         // opacity for a slab as deep as the footprint (2^level voxels): take
         // the cells' optical depth per that depth, or it would count twice.
-        float a = clamp(directional.a, 0.0, 0.9999);
-        if (a <= 1e-6) return vec4(0.0);
-        float af = 1.0 - pow(1.0 - a, exp2(max(level, 0.0) - 1.0));
-        return vec4(directional.rgb * (af / a), af);
+        float alpha = clamp(directional.a, 0.0, 0.9999);
+        if (alpha <= 1e-6) return vec4(0.0);
+        float perFootprint = 1.0 - pow(1.0 - alpha, exp2(max(level, 0.0) - 1.0));
+        return vec4(directional.rgb * (perFootprint / alpha), perFootprint);
     }
     vec4 acc = vec4(0.0);
     addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);

@@ -192,7 +192,7 @@ TEST_F(ThinWallPixels, RoomFloorShowsNoGlowAlongTheWalls) {
                 "1.50 before)\n",
                 band, inner, band / inner);
     ASSERT_GT(inner, 0.0);
-    EXPECT_LT(band / inner, 1.0);  // not brighter (measured 0.30: the walls' inner sides are dark)
+    EXPECT_LT(band / inner, 1.0);  // not brighter (measured 0.31: the walls' inner sides are dark)
 }
 
 // A thin wall standing on thick ground, the sun on its +x side: beside the
@@ -230,7 +230,7 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
                 litNear, litFar, litNear / litFar, darkNear, darkFar, darkNear / darkFar);
     ASSERT_GT(litFar, 0.0);
     ASSERT_GT(darkFar, 0.0);
-    EXPECT_GT(litNear / litFar, 0.9);    // measured 1.03: nearer the wall sees more of it
+    EXPECT_GT(litNear / litFar, 0.9);    // measured 1.02: nearer the wall sees more of it
     EXPECT_LT(darkNear / darkFar, 1.5);  // measured 1.29
 }
 
