@@ -238,7 +238,8 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
 // on one side, seen from either side, no bounce: the sunlit side shows
 // rho / pi E cos(theta) (times the view's 0.8 shade for x faces), the other
 // side black. The radiance texel holds the darker side (black here), so a
-// view that showed the texel showed both sides black.
+// view that showed the texel showed both sides black. Then one bounce off a
+// floor on the sunlit side only, which each side's own reflected light shows.
 TEST_F(ThinWallPixels, VoxelViewShowsTheSideFacingTheCamera) {
     constexpr uint32_t n = 64;
     const float v = 2.0f / float(n);
@@ -250,12 +251,13 @@ TEST_F(ThinWallPixels, VoxelViewShowsTheSideFacingTheCamera) {
     const glm::vec3 sunDir(-1.0f, -0.3f, -0.2f);
     addSun(s, sunDir);
     addTopDownCamera(s, 0.0f, glm::radians(40.0f));
+    const size_t camera = s.nodes.size() - 1;
     render::RenderSettings rs = pixelSettings(n, 0);
     rs.width = rs.height = 32;
     rs.view.mode = render::ViewMode::VoxelRadiance;
     // The mean over the middle 16 x 16 pixels (all on the wall) seen from x.
     auto seenFrom = [&](float x) {
-        scene::Node& cam = s.nodes.back();
+        scene::Node& cam = s.nodes[camera];
         cam.translation = glm::vec3(x, 0.0f, 0.0f);
         cam.rotation = glm::angleAxis(glm::half_pi<float>() * (x > 0.0f ? 1.0f : -1.0f), glm::vec3(0, 1, 0));
         const image::ImageRGBA32F img = render(s, rs);
@@ -270,6 +272,17 @@ TEST_F(ThinWallPixels, VoxelViewShowsTheSideFacingTheCamera) {
                 sunlit, want, shadowed);
     EXPECT_NEAR(sunlit / want, 1.0, 0.02);
     EXPECT_LT(shadowed, 1e-3);
+
+    // One bounce with a lit floor on the sunlit side only: that side shows its
+    // direct and its reflected light, the other side still nothing (showing a
+    // side's direct light with the other's reflected light would fail both).
+    addBox(s, grey, glm::vec3(0.4f, v, 0.4f), glm::vec3(0.45f + v, -0.4f - v, 0.0f), false);
+    rs.voxelLight.bounces = 1;
+    const double sunlitBounced = seenFrom(0.9f), shadowedBounced = seenFrom(-0.9f);
+    std::printf("  with one bounce off a floor on the sunlit side: sunlit side %.4f (+%.1f %%), shadowed side %.4f\n",
+                sunlitBounced, 100.0 * (sunlitBounced / sunlit - 1.0), shadowedBounced);
+    EXPECT_GT(sunlitBounced, 1.02 * sunlit);  // measured +4.1 %
+    EXPECT_LT(shadowedBounced, 0.1 * (sunlitBounced - sunlit));
 }
 
 }  // namespace
