@@ -90,8 +90,8 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
         n = vec3(0.0);
         n[a] = pos[a] >= neg[a] ? 1.0 : -1.0;
     }
-    bool twoSided = code >= 1u && code <= 3u;
-    int axis = twoSided ? int(code) - 1 : 0;
+    bool twoSided = twoSidedAxis(code) >= 0;
+    int axis = max(twoSidedAxis(code), 0);
     // A two-sided voxel's six cones gather for the side its weights favour.
     int strong = twoSided && pos[axis] < neg[axis] ? 1 : 0;
     if (twoSided) {

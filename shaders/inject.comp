@@ -66,7 +66,7 @@ void main() {
     // normals, from just outside the voxel on their side: a thin wall's
     // shadowed face stays dark however the wall's sunlit face is weighted.
     uint code = sideCode(pos, neg);
-    int axis = code >= 1u && code <= 3u ? int(code) - 1 : -1;
+    int axis = twoSidedAxis(code);
     vec3 sideN[2] = vec3[2](vec3(0.0), vec3(0.0));
     if (axis >= 0) {
         sideN[0][axis] = 1.0;

@@ -38,11 +38,10 @@ bool occupied(ivec3 v, uint mode, int size) {
 
 // Radiance as a ray travelling along rd sees the voxel.
 vec3 radianceSeen(ivec3 v, uint slot, vec3 rd) {
-    uint code = sideCodeOf(imageLoad(direct, slotTexel(slot, 0u)));
-    if (code < 1u || code > 3u) return imageLoad(radiance, v).rgb;
-    // Side 0 faces +axis; a ray travelling toward +axis meets side 1.
-    uvec4 t = imageLoad(sides, slotTexel(slot, 0u));
-    return rd[code - 1u] > 0.0 ? unpackRgb9e5(t.y) + unpackRgb9e5(t.w) : unpackRgb9e5(t.x) + unpackRgb9e5(t.z);
+    int axis = twoSidedAxis(sideCodeOf(imageLoad(direct, slotTexel(slot, 0u))));
+    if (axis < 0) return imageLoad(radiance, v).rgb;
+    // A ray travelling toward +axis meets the side facing -axis (side 1).
+    return sideLight(imageLoad(sides, slotTexel(slot, 0u)), rd[axis] > 0.0 ? 1 : 0);
 }
 
 vec3 value(ivec3 v, uint mode, int size, vec3 rd) {

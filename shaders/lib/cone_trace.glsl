@@ -104,6 +104,15 @@ void addOpticalDepth(vec4 a, vec4 b, float f, float w, inout vec4 acc) {
     acc += w * vec4(mix(ja, jb, f), mix(ta, tb, f));
 }
 
+// A premultiplied sample whose opacity stands for a slab of depth 1, as it
+// stands for a slab `ratio` times as deep (alpha' = 1 - (1 - alpha)^ratio, the
+// colour kept in proportion).
+vec4 forDepthRatio(vec4 smp, float ratio) {
+    float a = clamp(smp.a, 0.0, 1.0);
+    float ac = 1.0 - pow(1.0 - min(a, 0.9999), ratio);
+    return vec4(a > 1e-6 ? smp.rgb * (ac / a) : vec3(0.0), ac);
+}
+
 // Summed (tau L, tau) back to premultiplied (alpha L, alpha).
 vec4 premultiplied(vec4 acc) {
     if (acc.a <= 1e-6) return vec4(0.0);
@@ -145,10 +154,7 @@ vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
         // Level 0's cells are two voxels deep and the caller corrects the
         // opacity for a slab as deep as the footprint (2^level voxels): take
         // the cells' optical depth per that depth, or it would count twice.
-        float alpha = clamp(directional.a, 0.0, 0.9999);
-        if (alpha <= 1e-6) return vec4(0.0);
-        float perFootprint = 1.0 - pow(1.0 - alpha, exp2(max(level, 0.0) - 1.0));
-        return vec4(directional.rgb * (perFootprint / alpha), perFootprint);
+        return forDepthRatio(directional, exp2(max(level, 0.0) - 1.0));
     }
     vec4 acc = vec4(0.0);
     addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);
@@ -327,9 +333,9 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         float stepLen = max(min(params.trace.x * dCone, d), params.trace.y * s);
         // A sample's opacity stands for a slab one cell thick: rescale it
         // to the step actually taken so results do not depend on beta.
-        float a = clamp(smp.a, 0.0, 1.0);
-        float ac = 1.0 - pow(1.0 - min(a, 0.9999), stepLen / d);
-        vec3 c = a > 1e-6 ? smp.rgb * (ac / a) : vec3(0.0);
+        vec4 stepped = forDepthRatio(smp, stepLen / d);
+        float ac = stepped.a;
+        vec3 c = stepped.rgb;
         // Each step occludes what still gets through it (the transmittance
         // before it), weighted by its distance: sum_k T_k alpha_k f(r_k).
         ao += (1.0 - acc.a) * ac / (1.0 + aoLambda * t / s);

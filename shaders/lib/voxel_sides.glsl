@@ -21,6 +21,10 @@ uint sideCode(vec3 pos, vec3 neg) {
 float sideCodeAlpha(uint code) { return 1.0 + float(code); }
 uint sideCodeOf(vec4 direct) { return uint(direct.a + 0.5) - 1u; }
 
+// The axis (0-2) along which a voxel with side code `code` is two-sided; -1
+// for SIDE_ONE and SIDE_SEVERAL.
+int twoSidedAxis(uint code) { return code >= 1u && code <= 3u ? int(code) - 1 : -1; }
+
 // Whether a radiance texel's opacity is TWO_SIDED_OPACITY's (occupied voxels
 // have 1, empty ones 0): a voxel whose side code is not SIDE_ONE.
 bool marksTwoSided(float opacity) { return opacity > 0.0 && opacity < 1.0; }
@@ -44,5 +48,11 @@ uint packRgb9e5(vec3 rgb) {
 vec3 unpackRgb9e5(uint v) {
     uvec3 q = uvec3(v, v >> 9, v >> 18) & 511u;
     return vec3(q) * exp2(float(int(v >> 27) - 24));
+}
+
+// Side 0 (+axis) or 1 (-axis) of a slot's side-light texel `t`: its direct
+// plus reflected light.
+vec3 sideLight(uvec4 t, int side) {
+    return side == 0 ? unpackRgb9e5(t.x) + unpackRgb9e5(t.z) : unpackRgb9e5(t.y) + unpackRgb9e5(t.w);
 }
 #endif
