@@ -23,6 +23,9 @@ const uint32_t kComp[] = {
 const uint32_t kCompClipmap[] = {
 #include "shaders/lighting_clipmap.comp.inc"
 };
+const uint32_t kCompMapsOnly[] = {
+#include "shaders/lighting_shadow_maps_only.comp.inc"
+};
 
 }  // namespace
 
@@ -47,6 +50,7 @@ LightingPass::LightingPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "lighting");
     if (clipmap) clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompClipmap), layout, "lighting (clipmap)");
+    mapsOnly_ = gpu::Pipeline(ctx, gpu::Spirv(kCompMapsOnly), layout, "lighting (shadow maps only)");
 }
 
 void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const LightingInputs& in,
@@ -67,7 +71,9 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
             .image(in.clip->atlases.directional, gpu::use::ComputeRead);
     tracker.image(direct, gpu::use::ComputeWrite, true).image(visibility, gpu::use::ComputeWrite, true).flush(cmd);
     const VkSampler volumeSampler = in.samplers.volume.handle();
-    const gpu::Pipeline& pipeline = in.clip ? clipPipeline_ : pipeline_;
+    // Cones only where some light needs one; a fitted grid and a clipmap need none alike.
+    const bool anyCone = cones.enabled || in.areaLights;
+    const gpu::Pipeline& pipeline = !anyCone ? mapsOnly_ : in.clip ? clipPipeline_ : pipeline_;
     gpu::bind(cmd, pipeline);
     const VkSampler point = in.samplers.point.handle();
     gpu::Descriptors()

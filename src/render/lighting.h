@@ -35,6 +35,7 @@ struct LightingInputs {
     const gpu::Buffer& views;
     const vxgi::VoxelVolumes& volumes;  // radiance and directional (shadow cones, area-light visibility)
     const vxgi::ClipTrace* clip = nullptr;  // clipmap levels to trace instead of `volumes`
+    bool areaLights = false;                // `lights` holds LIGHT_AREA patches (their visibility is a cone)
 };
 
 class LightingPass {
@@ -49,6 +50,7 @@ public:
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_, clipPipeline_;
+    gpu::Pipeline mapsOnly_;  // no shadow cones, no area lights: the variant without the voxel cones
 };
 
 }  // namespace dvsgi::render

@@ -362,7 +362,7 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
         clip_.empty() ? std::nullopt
                       : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});
     const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
-                             trace ? &*trace : nullptr};
+                             trace ? &*trace : nullptr, patchCount_ > 0};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
         const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr};
