@@ -27,11 +27,17 @@ void main() {
 #endif
 
     float metallic = m.params.x, roughness = m.params.y;
+#ifndef DVSGI_BASE_COLOR_ONLY
+    // Materials whose only texture, if any, is the base colour are drawn with
+    // the BASE_COLOR_ONLY variant, which leaves these samples out: llvmpipe runs
+    // both sides of every branch, so they were taken, and thrown away, for
+    // every fragment (Sponza: the pass took twice as long).
     if (m.textures.z != NO_TEXTURE) {
         vec4 mr = sampleTexture(m.textures.z, inUV);
         roughness *= mr.g;
         metallic *= mr.b;
     }
+#endif
     // Back faces reflect like front faces (CONVENTIONS.md), so shade them with
     // the flipped normal; only emission is one-sided.
     vec3 N = normalize(inNormal);
@@ -40,7 +46,9 @@ void main() {
     vec3 emission = vec3(0.0);
     if (gl_FrontFacing || m.flags.y != 0u) {
         emission = m.emission.rgb;
+#ifndef DVSGI_BASE_COLOR_ONLY
         if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, inUV).rgb;
+#endif
     }
     outBase = vec4(base.rgb, metallic);
     outNormal = vec4(N, roughness);

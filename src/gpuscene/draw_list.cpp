@@ -68,7 +68,7 @@ DrawList visibleDraws(const SceneGpu& scene, const glm::mat4& viewProj, DrawFilt
                 runs.back().indexCount += count;
                 ++runChunks;
             } else {
-                runs.push_back({d, first, count, r.vertexOffset});
+                runs.push_back({d, first, count, r.vertexOffset, r.baseColorOnly});
                 runChunks = 1;
             }
         }
@@ -76,15 +76,17 @@ DrawList visibleDraws(const SceneGpu& scene, const glm::mat4& viewProj, DrawFilt
     return list;
 }
 
-void recordDraws(VkCommandBuffer cmd, const DrawList& list, const gpu::Pipeline& opaque,
-                 const gpu::Pipeline& alphaTested, uint32_t view) {
+void recordDraws(VkCommandBuffer cmd, const DrawList& list, const DrawPipelines& pipelines, uint32_t view) {
+    const gpu::Pipeline* bound = nullptr;
     for (bool alpha : {false, true}) {
-        const std::vector<DrawRun>& runs = alpha ? list.alphaTested : list.opaque;
-        if (runs.empty()) continue;
-        gpu::bind(cmd, alpha ? alphaTested : opaque);
-        for (const DrawRun& r : runs) {
+        const gpu::Pipeline& full = alpha ? pipelines.alphaTested : pipelines.opaque;
+        const gpu::Pipeline* plain = alpha ? pipelines.alphaTestedBaseColorOnly : pipelines.opaqueBaseColorOnly;
+        for (const DrawRun& r : alpha ? list.alphaTested : list.opaque) {
+            const gpu::Pipeline* p = r.baseColorOnly && plain ? plain : &full;
+            if (p != bound) gpu::bind(cmd, *p);
+            bound = p;
             const sh::DrawPush push{glm::uvec4(r.draw, view, 0, 0)};
-            gpu::pushConstants(cmd, opaque, VK_SHADER_STAGE_VERTEX_BIT, push);
+            gpu::pushConstants(cmd, full, VK_SHADER_STAGE_VERTEX_BIT, push);
             vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
         }
     }

@@ -26,6 +26,7 @@ struct DrawRun {
     uint32_t firstIndex;
     uint32_t indexCount;
     int32_t vertexOffset;
+    bool baseColorOnly;  // DrawRange::baseColorOnly of its draw
 };
 
 struct DrawList {
@@ -44,10 +45,21 @@ constexpr uint32_t kRunChunks = 16;
 // would have clipped away whole. Runs keep the scene's order.
 DrawList visibleDraws(const SceneGpu& scene, const glm::mat4& viewProj, DrawFilter filter);
 
-// Records `list`: opaque runs with `opaque`, then the others with
-// `alphaTested`. Both pipelines share one layout (descriptors already pushed,
-// geometry bound); each run pushes shader::DrawPush {draw index, `view`}.
-void recordDraws(VkCommandBuffer cmd, const DrawList& list, const gpu::Pipeline& opaque,
-                 const gpu::Pipeline& alphaTested, uint32_t view);
+// The pipelines a raster pass draws runs with: `opaque` for opaque materials,
+// `alphaTested` for the others, and where given, the `...BaseColorOnly` ones
+// for runs whose material samples no texture but the base colour's (a pass
+// can leave the other samples out of their shader: llvmpipe takes every
+// sample of a shader, branch or not). All share one layout.
+struct DrawPipelines {
+    const gpu::Pipeline& opaque;
+    const gpu::Pipeline& alphaTested;
+    const gpu::Pipeline* opaqueBaseColorOnly = nullptr;
+    const gpu::Pipeline* alphaTestedBaseColorOnly = nullptr;
+};
+
+// Records `list`: opaque runs, then the others, in the scene's order, each
+// with its pipeline (descriptors already pushed, geometry bound); each run
+// pushes shader::DrawPush {draw index, `view`}.
+void recordDraws(VkCommandBuffer cmd, const DrawList& list, const DrawPipelines& pipelines, uint32_t view);
 
 }  // namespace dvsgi::gpuscene

@@ -54,10 +54,12 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene, float max
     std::vector<scene::Vertex> allVertices;
     std::vector<uint32_t> allIndices;
     for (const scene::Primitive& p : scene.primitives) {
-        const bool alphaTested = p.material < scene.materials.size() &&
-                                 scene.materials[p.material].alphaMode != scene::AlphaMode::Opaque;
-        primitiveRanges_.push_back(
-            {uint32_t(allIndices.size()), uint32_t(p.indices.size()), int32_t(allVertices.size()), alphaTested, false});
+        const bool known = p.material < scene.materials.size();
+        const bool alphaTested = known && scene.materials[p.material].alphaMode != scene::AlphaMode::Opaque;
+        const bool baseColorOnly = known && scene.materials[p.material].emissiveTexture < 0 &&
+                                   scene.materials[p.material].metallicRoughnessTexture < 0;
+        primitiveRanges_.push_back({uint32_t(allIndices.size()), uint32_t(p.indices.size()),
+                                    int32_t(allVertices.size()), alphaTested, false, baseColorOnly});
         allVertices.insert(allVertices.end(), p.vertices.begin(), p.vertices.end());
         allIndices.insert(allIndices.end(), p.indices.begin(), p.indices.end());
         std::vector<scene::Bounds>& chunks = primitiveChunks.emplace_back();

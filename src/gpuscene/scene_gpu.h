@@ -17,6 +17,7 @@ struct DrawRange {
     int32_t vertexOffset;
     bool alphaTested;  // MASK or BLEND material: needs a fragment shader even for depth
     bool dynamic;      // its node or an ancestor is dynamic: re-voxelized every frame
+    bool baseColorOnly = false;  // its material samples no texture but (maybe) the base colour's
 };
 
 class SceneGpu {

@@ -22,10 +22,17 @@ const uint32_t kFrag[] = {
 const uint32_t kFragAlphaTested[] = {
 #include "shaders/gbuffer_alpha_tested.frag.inc"
 };
+const uint32_t kFragBaseColorOnly[] = {
+#include "shaders/gbuffer_base_color_only.frag.inc"
+};
+const uint32_t kFragAlphaTestedBaseColorOnly[] = {
+#include "shaders/gbuffer_alpha_tested_base_color_only.frag.inc"
+};
 
 }  // namespace
 
-gpu::Spirv gbufferFragmentShader(bool alphaTested) {
+gpu::Spirv gbufferFragmentShader(bool alphaTested, bool baseColorOnly) {
+    if (baseColorOnly) return alphaTested ? gpu::Spirv(kFragAlphaTestedBaseColorOnly) : gpu::Spirv(kFragBaseColorOnly);
     return alphaTested ? gpu::Spirv(kFragAlphaTested) : gpu::Spirv(kFrag);
 }
 
@@ -47,6 +54,10 @@ GBufferPass::GBufferPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(
     opaque_ = gpu::Pipeline(ctx, g, layout, "gbuffer opaque");
     g.fragment = gbufferFragmentShader(true);
     alphaTested_ = gpu::Pipeline(ctx, g, layout, "gbuffer alpha-tested");
+    g.fragment = gbufferFragmentShader(false, true);
+    opaqueBaseColorOnly_ = gpu::Pipeline(ctx, g, layout, "gbuffer opaque, base colour only");
+    g.fragment = gbufferFragmentShader(true, true);
+    alphaTestedBaseColorOnly_ = gpu::Pipeline(ctx, g, layout, "gbuffer alpha-tested, base colour only");
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene,
@@ -93,7 +104,7 @@ void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Scene
     const VkViewport viewport{0, 0, float(width), float(height), 0, 1};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &area);
-    gpuscene::recordDraws(cmd, draws, opaque_, alphaTested_, 0);
+    gpuscene::recordDraws(cmd, draws, {opaque_, alphaTested_, &opaqueBaseColorOnly_, &alphaTestedBaseColorOnly_}, 0);
     vkCmdEndRendering(cmd);
 }
 

@@ -22,8 +22,9 @@ using gpuscene::SceneGpu;
 
 // The G-buffer's fragment shader: the variant that can discard (MASK/BLEND
 // coverage) or the one for opaque materials, which must not, so the depth test
-// can run before shading.
-gpu::Spirv gbufferFragmentShader(bool alphaTested);
+// can run before shading; each also without the emissive and metallic-roughness
+// samples, for materials that have no such texture (`baseColorOnly`).
+gpu::Spirv gbufferFragmentShader(bool alphaTested, bool baseColorOnly = false);
 
 class GBufferPass {
 public:
@@ -37,6 +38,7 @@ private:
     const gpu::Context& ctx_;
     gpu::Pipeline opaque_;       // OPAQUE materials: no discard, early depth test
     gpu::Pipeline alphaTested_;  // MASK and BLEND materials
+    gpu::Pipeline opaqueBaseColorOnly_, alphaTestedBaseColorOnly_;  // the same, base colour sampled alone
 };
 
 }  // namespace dvsgi::render

@@ -228,7 +228,7 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         // Each view rasterizes only what reaches its frustum (a point light's face: 90 degrees of it).
         const gpuscene::DrawList list = gpuscene::visibleDraws(scene, hostViews[v].viewProj, draws);
         drawnTriangles_ += list.triangles();
-        gpuscene::recordDraws(cmd, list, opaque_, alphaTested_, v);
+        gpuscene::recordDraws(cmd, list, {opaque_, alphaTested_}, v);
         vkCmdEndRendering(cmd);
     }
 }

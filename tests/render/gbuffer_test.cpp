@@ -3,7 +3,9 @@
 // one that can: the opaque variant's SPIR-V holds no instruction that ends an
 // invocation, and a top-down view of three quads (a cut-out quad with its left
 // half kept, an opaque floor under it, a small opaque quad above it) shows
-// each surface only where it exists and is nearest.
+// each surface only where it exists and is nearest. Materials with no
+// emissive or metallic-roughness texture are drawn with variants that sample
+// the base colour alone.
 #include <cmath>
 #include <cstdio>
 
@@ -27,9 +29,89 @@ int discardInstructions(gpu::Spirv code) {
     return n;
 }
 
+// Instructions of a SPIR-V module that sample an image (implicit level of detail).
+int sampleInstructions(gpu::Spirv code) {
+    constexpr uint32_t kOpImageSampleImplicitLod = 87;
+    int n = 0;
+    for (size_t i = 5; i < code.size();) {
+        const uint32_t words = code[i] >> 16, op = code[i] & 0xFFFFu;
+        n += op == kOpImageSampleImplicitLod;
+        if (words == 0) break;
+        i += words;
+    }
+    return n;
+}
+
 TEST(GBufferShaders, OnlyTheAlphaTestedVariantCanDiscard) {
-    EXPECT_EQ(discardInstructions(render::gbufferFragmentShader(false)), 0);
-    EXPECT_GT(discardInstructions(render::gbufferFragmentShader(true)), 0);
+    for (bool baseColorOnly : {false, true}) {
+        EXPECT_EQ(discardInstructions(render::gbufferFragmentShader(false, baseColorOnly)), 0);
+        EXPECT_GT(discardInstructions(render::gbufferFragmentShader(true, baseColorOnly)), 0);
+    }
+}
+
+// Materials without an emissive or metallic-roughness texture are drawn with
+// variants that sample the base colour alone: llvmpipe takes every sample in
+// a shader, whichever way its branch goes.
+TEST(GBufferShaders, BaseColorOnlyVariantsSampleOneTexture) {
+    for (bool alphaTested : {false, true}) {
+        EXPECT_EQ(sampleInstructions(render::gbufferFragmentShader(alphaTested, false)), 3);
+        EXPECT_EQ(sampleInstructions(render::gbufferFragmentShader(alphaTested, true)), 1);
+    }
+}
+
+// One frame holding both kinds of material (so both variants draw, in the
+// scene's order): each quad shows its own base colour, metallic, roughness
+// and emission texels, and the base-colour-only quad none of the others'.
+TEST_F(GpuTest, GBufferGivesEachMaterialItsOwnTextures) {
+    scene::Scene s;
+    auto uniformTexture = [&](uint8_t r, uint8_t g, uint8_t b) {
+        scene::Texture t;
+        t.name = "uniform" + std::to_string(s.textures.size());
+        t.width = t.height = 2;
+        for (int i = 0; i < 4; ++i) t.rgba8.insert(t.rgba8.end(), {r, g, b, 255});
+        t.srgb = false;
+        s.textures.push_back(t);
+        return int(s.textures.size() - 1);
+    };
+    const int base = uniformTexture(200, 100, 50), mr = uniformTexture(0, 128, 255), em = uniformTexture(64, 128, 255);
+    const int plain = addMaterial(s, glm::vec3(1.0f)), rough = addMaterial(s, glm::vec3(1.0f)),
+              glow = addMaterial(s, glm::vec3(1.0f), glm::vec3(2.0f));
+    for (int m : {plain, rough, glow}) s.materials[size_t(m)].baseColorTexture = base;
+    s.materials[size_t(rough)].metallicRoughnessTexture = mr;
+    s.materials[size_t(rough)].metallicFactor = 1.0f;
+    s.materials[size_t(rough)].roughnessFactor = 0.8f;
+    s.materials[size_t(glow)].emissiveTexture = em;
+    // Left to right in the image (+x): the metallic-roughness quad, the plain one, the emissive one.
+    addQuad(s, rough, glm::vec3(-0.7f, 0.0f, 0.0f), 0.3f);
+    addQuad(s, plain, glm::vec3(0.0f), 0.3f);
+    addQuad(s, glow, glm::vec3(0.7f, 0.0f, 0.0f), 0.3f);
+    addTopDownCamera(s, 2.0f, glm::radians(60.0f));
+    render::RenderSettings rs;
+    rs.width = rs.height = 32;
+    rs.voxels = 0;  // no voxels and no lights: the output is the emission
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    const render::Renderer::SurfaceImages g = r.readSurface();
+    const image::ImageRGBA32F out = r.readOutput();
+
+    const glm::vec3 albedo(200.0f / 255.0f, 100.0f / 255.0f, 50.0f / 255.0f);
+    struct Expected {
+        uint32_t column;
+        float metallic, roughness;
+        glm::vec3 emission;
+    };
+    const Expected quads[] = {{6, 1.0f, 0.8f * 128.0f / 255.0f, glm::vec3(0.0f)},
+                              {16, 0.0f, 1.0f, glm::vec3(0.0f)},
+                              {25, 0.0f, 1.0f, 2.0f * glm::vec3(64.0f, 128.0f, 255.0f) / 255.0f}};
+    for (const Expected& q : quads)
+        for (uint32_t x = q.column - 1; x <= q.column + 1; ++x)
+            for (uint32_t y = 15; y <= 17; ++y) {
+                const float* a = g.albedo.at(x, y);
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], albedo[c], 1e-3f) << "column " << x;
+                EXPECT_NEAR(a[3], q.metallic, 1e-3f) << "column " << x;
+                EXPECT_NEAR(g.normal.at(x, y)[3], q.roughness, 1e-3f) << "column " << x;
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.at(x, y)[c], q.emission[c], 2e-3f) << "column " << x;
+            }
 }
 
 TEST_F(GpuTest, GBufferCutOutsShowOnlyWhereTheyExistAndBehindOpaqueSurfaces) {
