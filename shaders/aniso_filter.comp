@@ -79,10 +79,12 @@ vec4 child(uint dir, ivec3 p) {
     if (childAxis[i] == int(dir / 2u)) return vec4(childSide[i][dir % 2u == 0u ? 0 : 1], 1.0);
     return children[i];
 }
+#elif defined(DVSGI_BASE_LEVEL)
+vec4 child(uint dir, ivec3 p) { return imageLoad(source, p); }
 #else
-vec4 child(uint dir, ivec3 p) {
-    return pc.sizes.y != 0u ? imageLoad(source, p) : imageLoad(sourceDirs, directionalTexel(dir, p, 2 * int(pc.sizes.x)));
-}
+// The levels above the base are a variant of their own rather than a branch
+// on the level: llvmpipe took both loads of such a branch for every child.
+vec4 child(uint dir, ivec3 p) { return imageLoad(sourceDirs, directionalTexel(dir, p, 2 * int(pc.sizes.x))); }
 #endif
 
 void composite(ivec3 v, int size) {

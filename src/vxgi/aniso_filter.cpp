@@ -20,6 +20,9 @@ namespace sh = dvsgi::shader;
 const uint32_t kAniso[] = {
 #include "shaders/aniso_filter.comp.inc"
 };
+const uint32_t kAnisoBase[] = {
+#include "shaders/aniso_filter_base_level.comp.inc"
+};
 const uint32_t kAnisoTwoSided[] = {
 #include "shaders/aniso_filter_two_sided.comp.inc"
 };
@@ -35,6 +38,7 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::AnisoPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kAniso), layout, "anisotropic filtering");
+    base_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoBase), layout, "anisotropic filtering (base level)");
     layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                                                    {sh::BIND_ANISO_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                                                    {sh::BIND_ANISO_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
@@ -56,15 +60,16 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
         if (level > 0) tracker.imageMip(v.directional, level - 1, gpu::use::ComputeRead);
         tracker.imageMip(v.directional, level, level == 0 ? gpu::use::ComputeReadWrite : gpu::use::ComputeWrite, true);
         tracker.flush(cmd);
-        gpu::bind(cmd, pipeline_);
+        const gpu::Pipeline& pipeline = level == 0 ? base_ : pipeline_;
+        gpu::bind(cmd, pipeline);
         gpu::Descriptors()
             .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
             .storageImage(sh::BIND_ANISO_SOURCE_DIRS, source)
             .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(level))
-            .push(ctx_, cmd, pipeline_);
+            .push(ctx_, cmd, pipeline);
         const uint32_t size = std::max((v.grid.n / 2) >> level, 1u);
         const sh::AnisoPush push{glm::uvec4(size, level == 0 ? 1u : 0u, 0u, 0u)};
-        gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         const uint32_t groups = gpu::groupCount(size, sh::ANISO_GROUP);
         vkCmdDispatch(cmd, groups, groups, groups);
         if (level == 0) recordTwoSided(cmd, tracker, v);

@@ -26,7 +26,8 @@ private:
     void recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
 
     const gpu::Context& ctx_;
-    gpu::Pipeline pipeline_;
+    gpu::Pipeline pipeline_;  // levels above the base: read the level below
+    gpu::Pipeline base_;      // the base level: reads the radiance volume
     gpu::Pipeline twoSided_;
 };
 
