@@ -9,7 +9,7 @@
 // visibility comes from the shadow maps or, with shadow cones (paper Table V),
 // from a cone traced through the voxel volumes toward the light.
 // The SHADOW_MAPS_ONLY variant leaves the cones out, for frames with neither
-// shadow cones nor area lights: on llvmpipe the cone paths cost 3.5x the
+// shadow cones nor area lights: on llvmpipe the cone paths cost 3.6x the
 // whole pass (Sponza, 640x360) even where no lane takes them.
 #define CONE_USE_RADIANCE_VOLUME
 layout(local_size_x = LIGHTING_GROUP, local_size_y = LIGHTING_GROUP) in;
