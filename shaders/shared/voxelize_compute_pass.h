@@ -83,8 +83,9 @@ DVSGI_CHECK_SIZE(VoxcTile, 16);
 struct VoxelizeComputePush {
     uvec4 ids;  // x first VoxcGroup of this mode, y group count, z VOXELIZE_STATIC/DYNAMIC, w VOXC_PHASE_*
     uvec4 dispatch;  // x workgroups per row of a 2D triangle-phase dispatch (groups beyond 65535 wrap into y),
-                     // y = 4 (bilinear taps), z = 2 (textures per material): loop counts the shader
-                     // compiler must not see, so each texture fetch stays one site (lib/material.glsl)
+                     // y = 4 (bilinear taps), z = 2 (textures per material; 1 when no material has an
+                     // emissive texture): loop counts the shader compiler must not see, so each
+                     // texture fetch stays one site (lib/material.glsl)
     uvec4 tiling;    // x the most columns a triangle walks alone (VOXC_WALK_COLUMNS_*),
                      // y columns per invocation in a tile (VOXC_LANE_COLUMNS_*),
                      // z hits a walk collects before sampling them (1..VOXC_PENDING)

@@ -78,7 +78,10 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene, float max
                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "indices");
 
     std::vector<sh::GpuMaterial> mats;
-    for (const scene::Material& m : scene.materials) mats.push_back(toGpu(m));
+    for (const scene::Material& m : scene.materials) {
+        mats.push_back(toGpu(m));
+        emissiveTextures = emissiveTextures || m.emissiveTexture >= 0;
+    }
     if (mats.empty()) mats.push_back(toGpu(scene::Material{}));
     materials = gpu::createBuffer(ctx, mats.data(), mats.size() * sizeof(sh::GpuMaterial),
                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");

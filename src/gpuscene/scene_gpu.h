@@ -38,6 +38,7 @@ public:
     gpu::Image fallbackTexture;
     gpu::Sampler sampler;
     std::unique_ptr<gpu::TextureTable> textureTable;
+    bool emissiveTextures = false;  // some material has an emissive texture (the compute voxelizer samples it)
     scene::Bounds bounds;
     uint64_t triangleCount = 0;
 

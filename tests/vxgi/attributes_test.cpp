@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -134,6 +135,37 @@ TEST_P(VoxelAttributes, EmissionIsNotClamped) {
             EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_G), 200.0f);
             EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_B), 1000.0f);
             EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_ALBEDO_G), 0.4f);
+        }
+}
+
+// An emissive texture scales the emission (both voxelizers; the compute one
+// samples it only when some material has one, so a scene that has one must
+// still get it).
+TEST_P(VoxelAttributes, EmissiveTextureScalesTheEmission) {
+    scene::Scene s;
+    auto uniformTexture = [&](uint8_t r, uint8_t g, uint8_t b) {
+        scene::Texture t;
+        t.name = "uniform" + std::to_string(s.textures.size());
+        t.width = t.height = 2;
+        for (int i = 0; i < 4; ++i) t.rgba8.insert(t.rgba8.end(), {r, g, b, 255});
+        t.srgb = false;
+        s.textures.push_back(t);
+        return int(s.textures.size() - 1);
+    };
+    const int m = addMaterial(s, glm::vec3(1.0f), glm::vec3(4.0f));
+    s.materials[size_t(m)].baseColorTexture = uniformTexture(51, 102, 204);
+    s.materials[size_t(m)].emissiveTexture = uniformTexture(64, 128, 255);
+    addRect(s, m, {5, 7.5f, 5}, {11, 7.5f, 13}, 1, 1.0f);
+    const VoxelReadback r = voxelizeScene(s, kGrid, GetParam());
+    const VoxelSet occ = r.occupancy();
+    ASSERT_GT(occ.count(), 0u);
+    for (int z = 0; z < int(kGrid.n); ++z)
+        for (int x = 0; x < int(kGrid.n); ++x) {
+            if (!occ.get(x, 7, z)) continue;
+            EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_R), 4.0f * 64.0f / 255.0f, 1e-4f);
+            EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_G), 4.0f * 128.0f / 255.0f, 1e-4f);
+            EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_B), 4.0f, 1e-4f);
+            EXPECT_NEAR(r.average(x, 7, z, sh::CH_ALBEDO_G), 102.0f / 255.0f, 1e-4f);
         }
 }
 
