@@ -1,6 +1,6 @@
 # Compiles GLSL with glslc at build time into C++ headers holding the SPIR-V words
 # (glslc -mfmt=num), so the binary embeds its shaders and no .spv is ever committed.
-#   dvsgi_add_shaders(TARGET name SOURCES a.comp b.vert a.comp@VARIANT ...)
+#   dvsgi_add_shaders(TARGET name SOURCES a.comp b.vert a.comp@VARIANT a.frag@A+B ...)
 # creates an INTERFACE library `name` whose include directory holds
 # shaders/<file>.<stage>.inc for every source (e.g. shaders/lighting.comp.inc).
 # Extra definitions for every shader, for diagnostics only (scripts/cone-check.sh

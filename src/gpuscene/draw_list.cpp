@@ -86,7 +86,7 @@ void recordDraws(VkCommandBuffer cmd, const DrawList& list, const DrawPipelines&
             if (p != bound) gpu::bind(cmd, *p);
             bound = p;
             const sh::DrawPush push{glm::uvec4(r.draw, view, 0, 0)};
-            gpu::pushConstants(cmd, full, VK_SHADER_STAGE_VERTEX_BIT, push);
+            gpu::pushConstants(cmd, *p, VK_SHADER_STAGE_VERTEX_BIT, push);
             vkCmdDrawIndexed(cmd, r.indexCount, 1, r.firstIndex, r.vertexOffset, 0);
         }
     }

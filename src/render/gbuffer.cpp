@@ -93,7 +93,7 @@ void GBufferPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Scene
     ri.pDepthAttachment = &depthInfo;
     vkCmdBeginRendering(cmd, &ri);
 
-    // Both pipelines share one layout, so descriptors pushed once serve both.
+    // All four pipelines share one layout, so descriptors pushed once serve them all.
     gpu::bind(cmd, opaque_);
     gpu::Descriptors()
         .uniformBuffer(sh::BIND_GEOM_FRAME, frame.handle())

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -17,6 +18,16 @@ gpu::Context& context() {
         return std::make_unique<gpu::Context>(o);
     }();
     return *ctx;
+}
+
+int addUniformTexture(scene::Scene& s, uint8_t r, uint8_t g, uint8_t b) {
+    scene::Texture t;
+    t.name = "uniform" + std::to_string(s.textures.size());
+    t.width = t.height = 2;
+    for (int i = 0; i < 4; ++i) t.rgba8.insert(t.rgba8.end(), {r, g, b, 255});
+    t.srgb = false;
+    s.textures.push_back(t);
+    return int(s.textures.size() - 1);
 }
 
 int addMaterial(scene::Scene& s, glm::vec3 albedo, glm::vec3 emission, bool doubleSided) {

@@ -29,6 +29,8 @@ private:
 
 // Programmatic scenes: a square of half-size h in the y = 0 plane, normal +Y.
 int addMaterial(scene::Scene& s, glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f), bool doubleSided = false);
+// A 2x2 texture of one linear (not sRGB) 8-bit colour; returns its index.
+int addUniformTexture(scene::Scene& s, uint8_t r, uint8_t g, uint8_t b);
 int addQuad(scene::Scene& s, int material, glm::vec3 center, float halfSize, glm::quat rotation = glm::quat(1, 0, 0, 0));
 void addTopDownCamera(scene::Scene& s, float height, float yfov);
 void addLight(scene::Scene& s, scene::Light light, glm::vec3 position, glm::vec3 direction);

@@ -59,32 +59,31 @@ TEST(GBufferShaders, BaseColorOnlyVariantsSampleOneTexture) {
     }
 }
 
-// One frame holding both kinds of material (so both variants draw, in the
-// scene's order): each quad shows its own base colour, metallic, roughness
-// and emission texels, and the base-colour-only quad none of the others'.
+// One frame holding both kinds of material, opaque and cut-out (so all four
+// variants draw, in the scene's order): each quad shows its own base colour,
+// metallic, roughness and emission texels, and the base-colour-only quad none
+// of the others'.
 TEST_F(GpuTest, GBufferGivesEachMaterialItsOwnTextures) {
     scene::Scene s;
-    auto uniformTexture = [&](uint8_t r, uint8_t g, uint8_t b) {
-        scene::Texture t;
-        t.name = "uniform" + std::to_string(s.textures.size());
-        t.width = t.height = 2;
-        for (int i = 0; i < 4; ++i) t.rgba8.insert(t.rgba8.end(), {r, g, b, 255});
-        t.srgb = false;
-        s.textures.push_back(t);
-        return int(s.textures.size() - 1);
-    };
-    const int base = uniformTexture(200, 100, 50), mr = uniformTexture(0, 128, 255), em = uniformTexture(64, 128, 255);
+    const int base = addUniformTexture(s, 200, 100, 50), mr = addUniformTexture(s, 0, 128, 128),
+              em = addUniformTexture(s, 64, 128, 255);
     const int plain = addMaterial(s, glm::vec3(1.0f)), rough = addMaterial(s, glm::vec3(1.0f)),
-              glow = addMaterial(s, glm::vec3(1.0f), glm::vec3(2.0f));
-    for (int m : {plain, rough, glow}) s.materials[size_t(m)].baseColorTexture = base;
+              glow = addMaterial(s, glm::vec3(1.0f), glm::vec3(2.0f)),
+              cutGlow = addMaterial(s, glm::vec3(1.0f), glm::vec3(2.0f));
+    for (int m : {plain, rough, glow, cutGlow}) s.materials[size_t(m)].baseColorTexture = base;
     s.materials[size_t(rough)].metallicRoughnessTexture = mr;
     s.materials[size_t(rough)].metallicFactor = 1.0f;
     s.materials[size_t(rough)].roughnessFactor = 0.8f;
     s.materials[size_t(glow)].emissiveTexture = em;
-    // Left to right in the image (+x): the metallic-roughness quad, the plain one, the emissive one.
+    s.materials[size_t(cutGlow)].emissiveTexture = em;
+    s.materials[size_t(cutGlow)].alphaMode = scene::AlphaMode::Mask;  // opaque texels: covered everywhere
+    // Seen from 2 m above with a 60 degree field of view, world x (and z) maps
+    // to pixel (x / (2 tan 30) + 1) * 16 - 0.5 of 32: x = -0.7, 0, 0.7 to
+    // columns 6, 16, 25, z = 0 and 0.7 to rows 16 and 25 (quads 8 pixels wide).
     addQuad(s, rough, glm::vec3(-0.7f, 0.0f, 0.0f), 0.3f);
     addQuad(s, plain, glm::vec3(0.0f), 0.3f);
     addQuad(s, glow, glm::vec3(0.7f, 0.0f, 0.0f), 0.3f);
+    addQuad(s, cutGlow, glm::vec3(0.0f, 0.0f, 0.7f), 0.3f);
     addTopDownCamera(s, 2.0f, glm::radians(60.0f));
     render::RenderSettings rs;
     rs.width = rs.height = 32;
@@ -95,22 +94,25 @@ TEST_F(GpuTest, GBufferGivesEachMaterialItsOwnTextures) {
     const image::ImageRGBA32F out = r.readOutput();
 
     const glm::vec3 albedo(200.0f / 255.0f, 100.0f / 255.0f, 50.0f / 255.0f);
+    const glm::vec3 glowing = 2.0f * glm::vec3(64.0f, 128.0f, 255.0f) / 255.0f;
     struct Expected {
-        uint32_t column;
+        uint32_t column, row;
         float metallic, roughness;
         glm::vec3 emission;
     };
-    const Expected quads[] = {{6, 1.0f, 0.8f * 128.0f / 255.0f, glm::vec3(0.0f)},
-                              {16, 0.0f, 1.0f, glm::vec3(0.0f)},
-                              {25, 0.0f, 1.0f, 2.0f * glm::vec3(64.0f, 128.0f, 255.0f) / 255.0f}};
+    const Expected quads[] = {{6, 16, 128.0f / 255.0f, 0.8f * 128.0f / 255.0f, glm::vec3(0.0f)},
+                              {16, 16, 0.0f, 1.0f, glm::vec3(0.0f)},
+                              {25, 16, 0.0f, 1.0f, glowing},
+                              {16, 25, 0.0f, 1.0f, glowing}};
+    // The G-buffer is RGBA16F (11 significant bits: 5e-4 relative).
     for (const Expected& q : quads)
         for (uint32_t x = q.column - 1; x <= q.column + 1; ++x)
-            for (uint32_t y = 15; y <= 17; ++y) {
+            for (uint32_t y = q.row - 1; y <= q.row + 1; ++y) {
                 const float* a = g.albedo.at(x, y);
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], albedo[c], 1e-3f) << "column " << x;
-                EXPECT_NEAR(a[3], q.metallic, 1e-3f) << "column " << x;
-                EXPECT_NEAR(g.normal.at(x, y)[3], q.roughness, 1e-3f) << "column " << x;
-                for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.at(x, y)[c], q.emission[c], 2e-3f) << "column " << x;
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], albedo[c], 1e-3f) << x << "," << y;
+                EXPECT_NEAR(a[3], q.metallic, 1e-3f) << x << "," << y;
+                EXPECT_NEAR(g.normal.at(x, y)[3], q.roughness, 1e-3f) << x << "," << y;
+                for (int c = 0; c < 3; ++c) EXPECT_NEAR(out.at(x, y)[c], q.emission[c], 2e-3f) << x << "," << y;
             }
 }
 

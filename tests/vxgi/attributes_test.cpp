@@ -143,18 +143,9 @@ TEST_P(VoxelAttributes, EmissionIsNotClamped) {
 // still get it).
 TEST_P(VoxelAttributes, EmissiveTextureScalesTheEmission) {
     scene::Scene s;
-    auto uniformTexture = [&](uint8_t r, uint8_t g, uint8_t b) {
-        scene::Texture t;
-        t.name = "uniform" + std::to_string(s.textures.size());
-        t.width = t.height = 2;
-        for (int i = 0; i < 4; ++i) t.rgba8.insert(t.rgba8.end(), {r, g, b, 255});
-        t.srgb = false;
-        s.textures.push_back(t);
-        return int(s.textures.size() - 1);
-    };
     const int m = addMaterial(s, glm::vec3(1.0f), glm::vec3(4.0f));
-    s.materials[size_t(m)].baseColorTexture = uniformTexture(51, 102, 204);
-    s.materials[size_t(m)].emissiveTexture = uniformTexture(64, 128, 255);
+    s.materials[size_t(m)].baseColorTexture = addUniformTexture(s, 51, 102, 204);
+    s.materials[size_t(m)].emissiveTexture = addUniformTexture(s, 64, 128, 255);
     addRect(s, m, {5, 7.5f, 5}, {11, 7.5f, 13}, 1, 1.0f);
     const VoxelReadback r = voxelizeScene(s, kGrid, GetParam());
     const VoxelSet occ = r.occupancy();
