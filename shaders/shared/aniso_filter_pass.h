@@ -21,7 +21,7 @@ DVSGI_CONST(uint, BIND_ANISO_SIDES, 6);   // per-slot side light (lib/voxel_side
 DVSGI_CONST(uint, BIND_ANISO_LIST, 7);    // occupied-voxel list: one invocation per entry
 
 struct AnisoPush {
-    uvec4 sizes;  // x target size (voxels per edge), y 1 = base level (read radiance; the shaders no longer read it: the base level is a variant)
+    uvec4 sizes;  // x target size (voxels per edge), yzw unused (the base level is a variant of its own)
 };
 DVSGI_CHECK_SIZE(AnisoPush, 16);
 

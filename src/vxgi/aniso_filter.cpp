@@ -68,7 +68,7 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
             .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(level))
             .push(ctx_, cmd, pipeline);
         const uint32_t size = std::max((v.grid.n / 2) >> level, 1u);
-        const sh::AnisoPush push{glm::uvec4(size, level == 0 ? 1u : 0u, 0u, 0u)};
+        const sh::AnisoPush push{glm::uvec4(size, 0u, 0u, 0u)};
         gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         const uint32_t groups = gpu::groupCount(size, sh::ANISO_GROUP);
         vkCmdDispatch(cmd, groups, groups, groups);
@@ -95,7 +95,7 @@ void AnisoFilterPass::recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker,
         .storageImage(sh::BIND_ANISO_SIDES, v.sides.view())
         .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle())
         .push(ctx_, cmd, twoSided_);
-    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 1u, 0u, 0u)};
+    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 0u, 0u, 0u)};
     gpu::pushConstants(cmd, twoSided_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }

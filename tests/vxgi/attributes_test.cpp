@@ -37,6 +37,14 @@ Counts expectedCounts(const scene::Scene& s) {
     return c;
 }
 
+// Calls f(x, z) for every occupied voxel of layer y.
+template <typename F>
+void forOccupiedInLayer(const VoxelSet& occ, int y, F f) {
+    for (int z = 0; z < int(kGrid.n); ++z)
+        for (int x = 0; x < int(kGrid.n); ++x)
+            if (occ.get(x, y, z)) f(x, z);
+}
+
 struct TwoLayers {
     VoxelReadback a, b, both;
     Counts expectA, expectB;
@@ -128,14 +136,12 @@ TEST_P(VoxelAttributes, EmissionIsNotClamped) {
     const VoxelReadback r = voxelizeScene(s, kGrid, GetParam());
     const VoxelSet occ = r.occupancy();
     ASSERT_GT(occ.count(), 0u);
-    for (int z = 0; z < int(kGrid.n); ++z)
-        for (int x = 0; x < int(kGrid.n); ++x) {
-            if (!occ.get(x, 7, z)) continue;
-            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_R), 500.0f);
-            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_G), 200.0f);
-            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_B), 1000.0f);
-            EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_ALBEDO_G), 0.4f);
-        }
+    forOccupiedInLayer(occ, 7, [&](int x, int z) {
+        EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_R), 500.0f);
+        EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_G), 200.0f);
+        EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_EMISSION_B), 1000.0f);
+        EXPECT_FLOAT_EQ(r.average(x, 7, z, sh::CH_ALBEDO_G), 0.4f);
+    });
 }
 
 // An emissive texture scales the emission (both voxelizers; the compute one
@@ -150,14 +156,12 @@ TEST_P(VoxelAttributes, EmissiveTextureScalesTheEmission) {
     const VoxelReadback r = voxelizeScene(s, kGrid, GetParam());
     const VoxelSet occ = r.occupancy();
     ASSERT_GT(occ.count(), 0u);
-    for (int z = 0; z < int(kGrid.n); ++z)
-        for (int x = 0; x < int(kGrid.n); ++x) {
-            if (!occ.get(x, 7, z)) continue;
-            EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_R), 4.0f * 64.0f / 255.0f, 1e-4f);
-            EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_G), 4.0f * 128.0f / 255.0f, 1e-4f);
-            EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_B), 4.0f, 1e-4f);
-            EXPECT_NEAR(r.average(x, 7, z, sh::CH_ALBEDO_G), 102.0f / 255.0f, 1e-4f);
-        }
+    forOccupiedInLayer(occ, 7, [&](int x, int z) {
+        EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_R), 4.0f * 64.0f / 255.0f, 1e-4f);
+        EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_G), 4.0f * 128.0f / 255.0f, 1e-4f);
+        EXPECT_NEAR(r.average(x, 7, z, sh::CH_EMISSION_B), 4.0f, 1e-4f);
+        EXPECT_NEAR(r.average(x, 7, z, sh::CH_ALBEDO_G), 102.0f / 255.0f, 1e-4f);
+    });
 }
 
 TEST_P(VoxelAttributes, OppositeNormalsKeepBothOrientations) {
