@@ -8,12 +8,17 @@
 // history texels around it are blended bilinearly, each only where last frame
 // saw the same surface there (its view depth within a relative tolerance of
 // the point's, its normal close). With any such texel the output is
-// mix(history, current, alpha), alpha = max(1 / (n + 1), alphaMin) where n is
-// the history's sample count (the running mean until 1/alphaMin samples, an
-// exponential average after); with none (disocclusion, off screen, the first
-// frame, a reset) the current value stays as the gather wrote it and the
-// count restarts at 1. The accumulated value goes back into the indirect
-// diffuse image (its alpha, the AO, untouched) and into the history for the
+// mix(history, current, alpha), one alpha for the whole frame
+// (render::temporalBlendWeight: the running mean of the frames since the
+// history restarted, until 1/alphaMin of them, an exponential average after);
+// with none (disocclusion, off screen, the first frame, a reset) the current
+// value stays as the gather wrote it and the pixel's count restarts at 1.
+// A pixel that has just come into view blends at the frame's alpha from its
+// first value on: weighting its own few frames as a running mean moved it by
+// half, a third, ... of the change between gathers each frame, and such pixels
+// set the walk's flicker (docs/benchmarks.md). The accumulated value goes
+// back into the indirect diffuse image (its alpha, the AO, untouched) and
+// into the history for the
 // next frame, with this frame's normal and view depth.
 layout(local_size_x = TEMPORAL_GROUP, local_size_y = TEMPORAL_GROUP) in;
 
@@ -83,7 +88,7 @@ void main() {
         imageStore(historyOut, px, vec4(current.rgb, 1.0));
         return;
     }
-    float alpha = max(1.0 / (samples + 1.0), pc.params.x);
+    float alpha = pc.params.x;
     // history + alpha (current - history), not mix(): equal inputs give that
     // value exactly, which lavapipe's round-toward-zero RGBA16F store keeps.
     vec3 result = history + alpha * (current.rgb - history);

@@ -382,7 +382,7 @@ void Renderer::recordTemporal(VkCommandBuffer cmd) {
     FrameTargets& f = *targets_;
     TemporalState& s = temporalState_;
     const TemporalIndirectInputs in{f.gbuffer, *samplers_, *frame_, f.temporal.color[s.previous],
-                                    f.temporal.surface[s.previous], s.previousViewProj, s.valid};
+                                    f.temporal.surface[s.previous], s.previousViewProj, s.valid, s.frames};
     const TemporalIndirectTargets out{f.diffuse, f.temporal.color[1 - s.previous], f.temporal.surface[1 - s.previous]};
     temporal_->record(cmd, tracker_, in, out, settings_.temporal, timers_.get());
     s.advance(viewProjection());

@@ -64,8 +64,8 @@ void TemporalIndirectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, co
         .push(ctx_, cmd, pipeline_);
     sh::TemporalIndirectPush push{};
     push.prevViewProj = in.previousViewProj;
-    push.params = glm::vec4(s.minAlpha, sh::TEMPORAL_DEPTH_TOLERANCE, sh::TEMPORAL_NORMAL_COSINE,
-                            sh::TEMPORAL_MAX_SAMPLES);
+    push.params = glm::vec4(temporalBlendWeight(s.minAlpha, in.historyFrames), sh::TEMPORAL_DEPTH_TOLERANCE,
+                            sh::TEMPORAL_NORMAL_COSINE, sh::TEMPORAL_MAX_SAMPLES);
     push.flags = glm::uvec4(width, height, in.historyValid ? 1u : 0u, 0u);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     vkCmdDispatch(cmd, gpu::groupCount(width, sh::TEMPORAL_GROUP), gpu::groupCount(height, sh::TEMPORAL_GROUP), 1);

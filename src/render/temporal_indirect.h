@@ -6,6 +6,9 @@
 // composite; shaders/temporal_indirect.comp says how.
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 #include "gpu/pipeline.h"
@@ -24,6 +27,13 @@ struct TemporalSettings {
     float minAlpha = 0.05f; // smallest weight of this frame's term (reached after 1/minAlpha - 1 frames)
 };
 
+// The weight of this frame's term when the history holds `historyFrames`
+// frames, the same for every pixel: the running mean of the frames since the
+// history (re)started, until 1/minAlpha of them, then an exponential average.
+inline float temporalBlendWeight(float minAlpha, uint32_t historyFrames) {
+    return std::max(1.0f / float(historyFrames + 1u), minAlpha);
+}
+
 struct TemporalIndirectInputs {
     const GBuffer& gbuffer;  // this frame's depth and normals
     const Samplers& samplers;
@@ -32,6 +42,7 @@ struct TemporalIndirectInputs {
     const gpu::Image& surface;  // last frame's normal and view depth (RGBA16F)
     glm::mat4 previousViewProj;  // last frame's camera, as FrameConstants::viewProj
     bool historyValid;           // false: first frame or a reset, the history is not read
+    uint32_t historyFrames;      // frames the history holds (when valid)
 };
 
 struct TemporalIndirectTargets {
@@ -62,6 +73,7 @@ struct TemporalState {
     uint32_t previous = 0;  // index of last frame's pair; this frame writes the other
     bool valid = false;
     uint32_t hold = 0;      // frames that still start without history
+    uint32_t frames = 0;    // frames the history holds (meaningful while valid)
     glm::mat4 previousViewProj{1.0f};
     void reset() { drop(1); }
     // The next `frames` frames (at least 1) start without history.
@@ -77,6 +89,7 @@ struct TemporalState {
     }
     // After recording a frame that wrote pair 1 - previous under `viewProj`.
     void advance(const glm::mat4& viewProj) {
+        frames = valid ? frames + 1u : 1u;
         previous = 1 - previous;
         valid = true;
         previousViewProj = viewProj;

@@ -135,9 +135,10 @@ public:
         }
     }
 
-    // Replaces the history the next frame reads (for the CPU comparison).
+    // Replaces the history the next frame reads (for the CPU comparison), as
+    // one that holds `frames` frames.
     void setHistory(const std::vector<glm::vec4>& color, const std::vector<glm::vec4>& surface,
-                    const glm::mat4& viewProj) {
+                    const glm::mat4& viewProj, uint32_t frames) {
         const int p = int(state_.previous);
         gpu::uploadImage(context(), history_[p], color.data(), color.size() * sizeof(glm::vec4),
                          gpu::use::ComputeRead);
@@ -146,6 +147,7 @@ public:
         gpu::uploadImage(context(), surface_[p], s.data(), s.size() * 2, gpu::use::ComputeRead);
         tracker_.assume(surface_[p], gpu::use::ComputeRead);
         state_.valid = true;
+        state_.frames = frames;
         state_.previousViewProj = viewProj;
     }
 
@@ -163,7 +165,7 @@ public:
         upload(diffuse_, d.data(), d.size() * 2, gpu::use::ComputeReadWrite);
         const int p = int(state_.previous);
         const render::TemporalIndirectInputs in{g_, samplers_, frame_, history_[p], surface_[p],
-                                                state_.previousViewProj, state_.valid};
+                                                state_.previousViewProj, state_.valid, state_.frames};
         const render::TemporalIndirectTargets out{diffuse_, history_[1 - p], surface_[1 - p]};
         render::TemporalSettings s;
         s.minAlpha = minAlpha;
@@ -201,9 +203,10 @@ private:
     render::TemporalState state_;
 };
 
-// The CPU model of temporal_indirect.comp, in double precision. kind: 0 no
-// geometry, 1 no history (off screen or reset), 2 every history texel
-// rejected, 3 blended. marginal: within rounding of a decision.
+// The CPU model of temporal_indirect.comp, in double precision, for a frame
+// whose blend weight is `alpha`. kind: 0 no geometry, 1 no history (off
+// screen or reset), 2 every history texel rejected, 3 blended. marginal:
+// within rounding of a decision.
 struct Reference {
     Outputs out;
     std::vector<int> kind;
@@ -211,7 +214,7 @@ struct Reference {
 };
 
 Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const std::vector<glm::vec4>& surface,
-                    const glm::mat4& prevViewProj, float minAlpha) {
+                    const glm::mat4& prevViewProj, double alpha) {
     const size_t n = size_t(kW) * kH;
     Reference r;
     r.out.diffuse = f.diffuse;
@@ -275,7 +278,6 @@ Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const
             }
             r.kind[i] = 3;
             const double samples = count / weight;
-            const double alpha = std::max(1.0 / (samples + 1.0), double(minAlpha));
             const glm::dvec3 history = sum / weight;
             const glm::dvec3 result = history + alpha * (glm::dvec3(cur) - history);
             r.out.history[i] = glm::vec4(glm::vec3(result), float(std::min(samples + 1.0, 255.0)));
@@ -325,9 +327,11 @@ TEST_F(TemporalIndirect, MatchesTheCpuModel) {
         }
 
     Harness h;
-    h.setHistory(history, surface, prevVp);
+    // A history of three frames: this frame weighs 1/4 (above alphaMin), and
+    // the texels' own counts (0 marks an empty one) no longer change it.
+    h.setHistory(history, surface, prevVp, 3);
     const Outputs gpu = h.run(now, 0.1f);
-    const Reference ref = reference(now, history, surface, prevVp, 0.1f);
+    const Reference ref = reference(now, history, surface, prevVp, render::temporalBlendWeight(0.1f, 3));
 
     int kinds[4] = {0, 0, 0, 0}, marginal = 0, wrong = 0;
     double worst = 0.0;  // largest relative difference of the history
@@ -451,6 +455,53 @@ TEST_F(TemporalIndirect, DisocclusionRejectsHistory) {
                 counts[1], counts[2], counts[3], bad);
     EXPECT_EQ(bad, 0);
     for (int c : counts) EXPECT_GT(c, 50);
+}
+
+// One blend weight for the whole frame: after 12 frames (weight at alphaMin,
+// 0.1) the quad moves and uncovers part of the wall; on the next frame those
+// wall pixels, whose own history holds one frame, move a tenth of the way to
+// the new term like every other kept pixel (weighing their own frames as a
+// running mean moved them half way: the flicker of newly visible surfaces).
+TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
+    constexpr int kBefore = 12;
+    constexpr float kMinAlpha = 0.1f;
+    const Camera camera{{0.0f, 0.0f, 5.0f}};
+    const Scene a{-0.9f, 0.0f}, b{-0.4f, 0.5f};
+    auto fill = [](Frame& fr, float wall, float quad) {
+        for (size_t i = 0; i < fr.diffuse.size(); ++i)
+            if (fr.surface[i] >= 0) fr.diffuse[i] = glm::vec4(fr.surface[i] == 0 ? wall : quad, 0.0f, 0.0f, 1.0f);
+    };
+    Harness h;
+    Frame f = makeFrame(a, camera);
+    fill(f, 1.0f, 10.0f);
+    for (int k = 0; k < kBefore; ++k) h.run(f, kMinAlpha);
+    Frame g = makeFrame(b, camera);
+    fill(g, 2.0f, 20.0f);
+    const Outputs moved = h.run(g, kMinAlpha);
+    fill(g, 3.0f, 30.0f);
+    const Outputs next = h.run(g, kMinAlpha);
+    int uncovered = 0, kept = 0, bad = 0;
+    for (uint32_t y = 1; y + 1 < kH; ++y)
+        for (uint32_t x = 1; x + 1 < kW; ++x) {
+            const size_t i = size_t(y) * kW + x;
+            bool uniform = true;  // the 3x3 neighbourhood sees one surface in all three frames
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const size_t j = size_t(int(y) + dy) * kW + size_t(int(x) + dx);
+                    uniform &= f.surface[j] == f.surface[i] && g.surface[j] == g.surface[i];
+                }
+            if (!uniform || g.surface[i] < 0) continue;
+            const float old = moved.diffuse[i].r, cur = g.diffuse[i].r;
+            const float expected = old + kMinAlpha * (cur - old);
+            if (f.surface[i] == 1 && g.surface[i] == 0) ++uncovered;
+            else ++kept;
+            if (!close(next.diffuse[i].r, expected, 1.5e-3) && ++bad <= 5)
+                std::printf("  (%u, %u): %g, expected %g (last frame %g)\n", x, y, next.diffuse[i].r, expected, old);
+        }
+    std::printf("  uncovered wall %d, kept %d pixels; %d wrong\n", uncovered, kept, bad);
+    EXPECT_EQ(bad, 0);
+    EXPECT_GT(uncovered, 50);
+    EXPECT_GT(kept, 500);
 }
 
 }  // namespace
