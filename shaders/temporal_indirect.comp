@@ -18,8 +18,8 @@
 // half, a third, ... of the change between gathers each frame, and such pixels
 // set the walk's flicker (docs/benchmarks.md). The accumulated value goes
 // back into the indirect diffuse image (its alpha, the AO, untouched) and
-// into the history for the
-// next frame, with this frame's normal and view depth.
+// into the history for the next frame, with this frame's normal and view
+// depth.
 layout(local_size_x = TEMPORAL_GROUP, local_size_y = TEMPORAL_GROUP) in;
 
 layout(set = 0, binding = BIND_TI_FRAME) uniform Frame { FrameConstants frame; };
