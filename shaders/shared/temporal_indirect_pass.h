@@ -11,7 +11,10 @@ DVSGI_CONST(uint, BIND_TI_FRAME, 0);        // FrameConstants of this frame's ca
 DVSGI_CONST(uint, BIND_TI_NORMAL, 1);       // G-buffer world normal (sampled)
 DVSGI_CONST(uint, BIND_TI_DEPTH, 2);        // G-buffer depth (sampled)
 DVSGI_CONST(uint, BIND_TI_DIFFUSE, 3);      // RGBA16F indirect diffuse: this frame's in, accumulated rgb out (a kept)
-DVSGI_CONST(uint, BIND_TI_HISTORY_IN, 4);   // RGBA32F last frame's accumulated rgb, a = samples in it
+// The history's a counts the frames a pixel has accumulated since it last
+// restarted: >= 1 marks history present (0: none, NaN: unusable). The blend
+// weight does not depend on it (one weight per frame, the push's params.x).
+DVSGI_CONST(uint, BIND_TI_HISTORY_IN, 4);   // RGBA32F last frame's accumulated rgb, a = the pixel's frames
 DVSGI_CONST(uint, BIND_TI_SURFACE_IN, 5);   // RGBA16F last frame's normal xyz, w = view depth (0: no surface)
 DVSGI_CONST(uint, BIND_TI_HISTORY_OUT, 6);  // this frame's, for the next
 DVSGI_CONST(uint, BIND_TI_SURFACE_OUT, 7);

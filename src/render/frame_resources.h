@@ -37,7 +37,7 @@ struct FrameSize {
 // internal size: two pairs that swap every frame, one holding last frame's
 // values, the other receiving this frame's.
 struct TemporalHistory {
-    gpu::Image color[2];    // RGBA32F accumulated indirect diffuse, a = sample count
+    gpu::Image color[2];    // RGBA32F accumulated indirect diffuse, a = the pixel's frames in it
     gpu::Image surface[2];  // RGBA16F normal xyz, w = view depth (0: no geometry)
     uint64_t memoryBytes() const;
 };

@@ -38,7 +38,7 @@ struct TemporalIndirectInputs {
     const GBuffer& gbuffer;  // this frame's depth and normals
     const Samplers& samplers;
     const gpu::Buffer& frame;  // FrameConstants of this frame's camera
-    const gpu::Image& history;  // last frame's accumulated term (RGBA32F, a = sample count)
+    const gpu::Image& history;  // last frame's accumulated term (RGBA32F, a = the pixel's frames in it, >= 1)
     const gpu::Image& surface;  // last frame's normal and view depth (RGBA16F)
     glm::mat4 previousViewProj;  // last frame's camera, as FrameConstants::viewProj
     bool historyValid;           // false: first frame or a reset, the history is not read
@@ -73,13 +73,15 @@ struct TemporalState {
     uint32_t previous = 0;  // index of last frame's pair; this frame writes the other
     bool valid = false;
     uint32_t hold = 0;      // frames that still start without history
-    uint32_t frames = 0;    // frames the history holds (meaningful while valid)
+    uint32_t frames = 0;    // frames the history holds (meaningful while valid; stops counting at kFramesCounted)
+    // Far past 1/minAlpha for any weight the settings allow (0.01 at least).
+    static constexpr uint32_t kFramesCounted = 1u << 16;
     glm::mat4 previousViewProj{1.0f};
     void reset() { drop(1); }
-    // The next `frames` frames (at least 1) start without history.
-    void drop(uint32_t frames) {
+    // The next `holdFrames` frames (at least 1) start without history.
+    void drop(uint32_t holdFrames) {
         valid = false;
-        hold = hold > frames ? hold : frames;
+        hold = hold > holdFrames ? hold : holdFrames;
     }
     // At the start of each frame.
     void beginFrame() {
@@ -89,7 +91,7 @@ struct TemporalState {
     }
     // After recording a frame that wrote pair 1 - previous under `viewProj`.
     void advance(const glm::mat4& viewProj) {
-        frames = valid ? frames + 1u : 1u;
+        frames = valid ? std::min(frames + 1u, kFramesCounted) : 1u;
         previous = 1 - previous;
         valid = true;
         previousViewProj = viewProj;

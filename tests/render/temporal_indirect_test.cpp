@@ -457,14 +457,18 @@ TEST_F(TemporalIndirect, DisocclusionRejectsHistory) {
     for (int c : counts) EXPECT_GT(c, 50);
 }
 
-// One blend weight for the whole frame: after 12 frames (weight at alphaMin,
-// 0.1) the quad moves and uncovers part of the wall; on the next frame those
-// wall pixels, whose own history holds one frame, move a tenth of the way to
-// the new term like every other kept pixel (weighing their own frames as a
-// running mean moved them half way: the flicker of newly visible surfaces).
+// One blend weight for the whole frame: four frames in, the quad moves,
+// uncovering part of the wall and covering another part; on the next frame
+// the history holds five frames, and every pixel that saw the same surface
+// last frame moves 1/6 of the way to the new term (the running mean of the
+// frames since the history started), those just uncovered or covered too,
+// whose own history holds one frame (weighing a pixel's own frames moved
+// them half way: the flicker of newly visible surfaces), and not alphaMin.
 TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
-    constexpr int kBefore = 12;
+    constexpr int kBefore = 4;
     constexpr float kMinAlpha = 0.1f;
+    const float alpha = render::temporalBlendWeight(kMinAlpha, kBefore + 1);
+    ASSERT_FLOAT_EQ(alpha, 1.0f / 6.0f);
     const Camera camera{{0.0f, 0.0f, 5.0f}};
     const Scene a{-0.9f, 0.0f}, b{-0.4f, 0.5f};
     auto fill = [](Frame& fr, float wall, float quad) {
@@ -480,7 +484,7 @@ TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
     const Outputs moved = h.run(g, kMinAlpha);
     fill(g, 3.0f, 30.0f);
     const Outputs next = h.run(g, kMinAlpha);
-    int uncovered = 0, kept = 0, bad = 0;
+    int uncovered = 0, covered = 0, kept = 0, bad = 0;
     for (uint32_t y = 1; y + 1 < kH; ++y)
         for (uint32_t x = 1; x + 1 < kW; ++x) {
             const size_t i = size_t(y) * kW + x;
@@ -492,16 +496,49 @@ TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
                 }
             if (!uniform || g.surface[i] < 0) continue;
             const float old = moved.diffuse[i].r, cur = g.diffuse[i].r;
-            const float expected = old + kMinAlpha * (cur - old);
-            if (f.surface[i] == 1 && g.surface[i] == 0) ++uncovered;
-            else ++kept;
+            const float expected = old + alpha * (cur - old);
+            if (f.surface[i] == g.surface[i]) ++kept;
+            else if (g.surface[i] == 0) ++uncovered;
+            else ++covered;
             if (!close(next.diffuse[i].r, expected, 1.5e-3) && ++bad <= 5)
                 std::printf("  (%u, %u): %g, expected %g (last frame %g)\n", x, y, next.diffuse[i].r, expected, old);
         }
-    std::printf("  uncovered wall %d, kept %d pixels; %d wrong\n", uncovered, kept, bad);
+    std::printf("  uncovered %d, newly covered %d, kept %d pixels; %d wrong\n", uncovered, covered, kept, bad);
     EXPECT_EQ(bad, 0);
     EXPECT_GT(uncovered, 50);
+    EXPECT_GT(covered, 50);
     EXPECT_GT(kept, 500);
+}
+
+// The frame count behind the weight: a hold of three frames restarts it, and
+// the first frame after the hold weighs 1/2, the next 1/3.
+TEST(TemporalState, HistoryFramesRestartAfterAHold) {
+    render::TemporalState s;
+    const glm::mat4 vp(1.0f);
+    for (int k = 0; k < 30; ++k) {
+        s.beginFrame();
+        s.advance(vp);
+    }
+    EXPECT_TRUE(s.valid);
+    EXPECT_EQ(s.frames, 30u);
+    s.drop(3);
+    for (int k = 0; k < 3; ++k) {
+        s.beginFrame();
+        EXPECT_FALSE(s.valid) << "held frame " << k;
+        s.advance(vp);
+        EXPECT_EQ(s.frames, 1u);
+    }
+    s.beginFrame();
+    ASSERT_TRUE(s.valid);
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames), 0.5f);
+    s.advance(vp);
+    s.beginFrame();
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames), 1.0f / 3.0f);
+    for (int k = 0; k < 100; ++k) {
+        s.advance(vp);
+        s.beginFrame();
+    }
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames), 0.05f);
 }
 
 }  // namespace
