@@ -207,13 +207,14 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
     // Past maxComputeWorkGroupCount[0] (65535 at least) the groups wrap into y.
     const uint32_t row = std::min(count, ctx_.properties.limits.maxComputeWorkGroupCount[0]);
     const glm::uvec4 tiling(tiling_.walkColumns, tiling_.laneColumns, tiling_.pending, 0);
-    // Base colour, and the emissive texture only where a material has one:
+    // x row width, y bilinear taps, z textures per material: base colour, and
+    // the emissive texture only where a material has one:
     // llvmpipe runs the loop's sample for every triangle even where its
     // material has no such texture.
-    const uint32_t texturesPerMaterial = scene.emissiveTextures ? 2u : 1u;
+    const glm::uvec4 dispatch(row, 4, scene.emissiveTextures ? 2u : 1u, 0);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TRIANGLES),
-                                               glm::uvec4(row, 4, texturesPerMaterial, 0), tiling});
+                                               dispatch, tiling});
     vkCmdDispatch(cmd, row, gpu::groupCount(count, row), 1);
 
     // The tiles the triangle phase queued; its atomics and the tile phase's
@@ -227,7 +228,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .flush(cmd);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT,
                        sh::VoxelizeComputePush{glm::uvec4(first, count, mode32, sh::VOXC_PHASE_TILES),
-                                               glm::uvec4(row, 4, texturesPerMaterial, 0), tiling});
+                                               dispatch, tiling});
     vkCmdDispatchIndirect(cmd, indirect_.handle(), 0);
 }
 

@@ -290,6 +290,24 @@ bool close(float gpu, float ref, double relative) {
     return std::abs(double(gpu) - double(ref)) <= relative * std::max(std::abs(double(ref)), 1e-3);
 }
 
+// Each pixel's term: `wall` on the wall, `quad` on the quad.
+void fill(Frame& fr, float wall, float quad) {
+    for (size_t i = 0; i < fr.diffuse.size(); ++i)
+        if (fr.surface[i] >= 0) fr.diffuse[i] = glm::vec4(fr.surface[i] == 0 ? wall : quad, 0.0f, 0.0f, 1.0f);
+}
+
+// Whether pixel (x, y)'s 3x3 neighbourhood sees one surface in frame f and
+// one in frame g (so bilinear taps never straddle an edge).
+bool sameSurfaceAround(const Frame& f, const Frame& g, uint32_t x, uint32_t y) {
+    const size_t i = size_t(y) * kW + x;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const size_t j = size_t(int(y) + dy) * kW + size_t(int(x) + dx);
+            if (f.surface[j] != f.surface[i] || g.surface[j] != g.surface[i]) return false;
+        }
+    return true;
+}
+
 class TemporalIndirect : public GpuTest {};
 
 // A texel-by-texel comparison with the CPU model: the camera moves sideways
@@ -421,10 +439,6 @@ TEST_F(TemporalIndirect, DisocclusionRejectsHistory) {
     const Scene a{-0.9f, 0.0f}, b{-0.4f, 0.5f};
     Harness h;
     Frame f = makeFrame(a, camera);
-    auto fill = [](Frame& fr, float wall, float quad) {
-        for (size_t i = 0; i < fr.diffuse.size(); ++i)
-            if (fr.surface[i] >= 0) fr.diffuse[i] = glm::vec4(fr.surface[i] == 0 ? wall : quad, 0.0f, 0.0f, 1.0f);
-    };
     fill(f, 1.0f, 10.0f);
     for (int k = 0; k < kBefore; ++k) h.run(f, 0.1f);
     Frame g = makeFrame(b, camera);
@@ -435,14 +449,8 @@ TEST_F(TemporalIndirect, DisocclusionRejectsHistory) {
     for (uint32_t y = 1; y + 1 < kH; ++y)
         for (uint32_t x = 1; x + 1 < kW; ++x) {
             // Pixels whose 3x3 neighbourhood sees one surface in both frames.
-            bool uniform = true;
             const size_t i = size_t(y) * kW + x;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const size_t j = size_t(int(y) + dy) * kW + size_t(int(x) + dx);
-                    uniform &= f.surface[j] == f.surface[i] && g.surface[j] == g.surface[i];
-                }
-            if (!uniform || g.surface[i] < 0) continue;
+            if (!sameSurfaceAround(f, g, x, y) || g.surface[i] < 0) continue;
             const int was = f.surface[i], is = g.surface[i];
             const float cur = g.diffuse[i].r, old = f.diffuse[i].r;
             const float expected = was == is ? old + alpha * (cur - old) : cur;
@@ -471,10 +479,6 @@ TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
     ASSERT_FLOAT_EQ(alpha, 1.0f / 6.0f);
     const Camera camera{{0.0f, 0.0f, 5.0f}};
     const Scene a{-0.9f, 0.0f}, b{-0.4f, 0.5f};
-    auto fill = [](Frame& fr, float wall, float quad) {
-        for (size_t i = 0; i < fr.diffuse.size(); ++i)
-            if (fr.surface[i] >= 0) fr.diffuse[i] = glm::vec4(fr.surface[i] == 0 ? wall : quad, 0.0f, 0.0f, 1.0f);
-    };
     Harness h;
     Frame f = makeFrame(a, camera);
     fill(f, 1.0f, 10.0f);
@@ -488,13 +492,7 @@ TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
     for (uint32_t y = 1; y + 1 < kH; ++y)
         for (uint32_t x = 1; x + 1 < kW; ++x) {
             const size_t i = size_t(y) * kW + x;
-            bool uniform = true;  // the 3x3 neighbourhood sees one surface in all three frames
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const size_t j = size_t(int(y) + dy) * kW + size_t(int(x) + dx);
-                    uniform &= f.surface[j] == f.surface[i] && g.surface[j] == g.surface[i];
-                }
-            if (!uniform || g.surface[i] < 0) continue;
+            if (!sameSurfaceAround(f, g, x, y) || g.surface[i] < 0) continue;
             const float old = moved.diffuse[i].r, cur = g.diffuse[i].r;
             const float expected = old + alpha * (cur - old);
             if (f.surface[i] == g.surface[i]) ++kept;
