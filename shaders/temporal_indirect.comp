@@ -6,8 +6,12 @@
 // Temporal accumulation of the indirect diffuse term (issue #11 item 3). Each
 // pixel's surface point is projected into last frame's camera; the four
 // history texels around it are blended bilinearly, each only where last frame
-// saw the same surface there (its view depth within a relative tolerance of
-// the point's, its normal close). With any such texel the output is
+// saw the same surface there: its point on this pixel's tangent plane within
+// a tolerance relative to the view depth, and its normal close. A tap's own
+// depth is not compared with the point's: on a floor seen at a grazing angle
+// the next texel's depth differs by more than any useful tolerance, and
+// rejecting it there dropped the history of whole strips of floor, whose raw
+// gather then set the walk's flicker. With any such texel the output is
 // mix(history, current, alpha), one alpha for the whole frame
 // (render::temporalBlendWeight: the running mean of the frames since the
 // history restarted, until 1/alphaMin of them, an exponential average after);
@@ -33,6 +37,18 @@ layout(set = 0, binding = BIND_TI_SURFACE_OUT, rgba16f) uniform writeonly image2
 layout(push_constant) uniform Push { TemporalIndirectPush pc; };
 
 bool finite(vec4 v) { return !any(isnan(v)) && !any(isinf(v)); }
+
+// The world point last frame's camera saw at pixel t, `viewDepth` along its
+// axis: on the ray through the pixel's centre, where clip w (the view depth,
+// affine in the point) takes that value.
+vec3 pointSeenBefore(mat4 invPrev, ivec2 t, ivec2 size, float viewDepth) {
+    vec2 ndc = (vec2(t) + 0.5) / vec2(size) * 2.0 - 1.0;
+    vec4 nearH = invPrev * vec4(ndc, 0.0, 1.0), farH = invPrev * vec4(ndc, 1.0, 1.0);
+    vec3 a = nearH.xyz / nearH.w, b = farH.xyz / farH.w;
+    vec4 wRow = vec4(pc.prevViewProj[0][3], pc.prevViewProj[1][3], pc.prevViewProj[2][3], pc.prevViewProj[3][3]);
+    float wa = dot(wRow, vec4(a, 1.0)), wb = dot(wRow, vec4(b, 1.0));
+    return mix(a, b, (viewDepth - wa) / (wb - wa));
+}
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -62,6 +78,7 @@ void main() {
             ivec2 b0 = ivec2(floor(b));
             vec2 f = b - vec2(b0);
             f = mix(f, round(f), lessThan(abs(f - round(f)), vec2(TEMPORAL_SNAP)));
+            mat4 invPrev = inverse(pc.prevViewProj);
             vec3 sum = vec3(0.0);
             float count = 0.0, weight = 0.0;
             for (int j = 0; j < 2; ++j)
@@ -70,8 +87,8 @@ void main() {
                     float bw = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
                     if (bw <= 0.0 || any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
                     vec4 s = imageLoad(surfaceIn, t);
-                    if (s.w <= 0.0 || abs(s.w - clip.w) > pc.params.y * clip.w || dot(s.xyz, N) < pc.params.z)
-                        continue;
+                    if (s.w <= 0.0 || dot(s.xyz, N) < pc.params.z) continue;
+                    if (abs(dot(pointSeenBefore(invPrev, t, size, s.w) - P.xyz, N)) > pc.params.y * clip.w) continue;
                     vec4 h = imageLoad(historyIn, t);
                     if (h.a < 1.0 || !finite(h)) continue;
                     sum += bw * h.rgb;

@@ -27,10 +27,10 @@ struct TemporalIndirectPush {
 };
 DVSGI_CHECK_SIZE(TemporalIndirectPush, 96);
 
-// History is rejected where the surface last frame saw at the reprojected
-// point is more than 2 % nearer or farther than expected (the flicker
-// figure's own test, render/temporal_change.h) or its normal is more than
-// about 25 degrees off.
+// A history texel is rejected where the point last frame saw there lies off
+// this pixel's tangent plane by more than 2 % of the view depth, or its normal
+// is more than about 25 degrees off (the flicker figure's own test of the same
+// surface, render/temporal_change.h).
 DVSGI_CONST(float, TEMPORAL_DEPTH_TOLERANCE, 0.02);
 DVSGI_CONST(float, TEMPORAL_NORMAL_COSINE, 0.9);
 DVSGI_CONST(float, TEMPORAL_MAX_SAMPLES, 255.0);

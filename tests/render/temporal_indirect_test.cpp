@@ -1,9 +1,10 @@
 // The temporal accumulation pass (render/temporal_indirect.h) alone, on
 // synthetic frames: a wall and a floating quad seen by two cameras, their depth
 // and normals written analytically into a G-buffer, with made-up indirect
-// terms and histories. Checks the pass texel by texel against a CPU model of
-// it, the running average under a still camera, and that disoccluded pixels
-// take no history.
+// terms and histories (and a floor seen at grazing angles). Checks the pass
+// texel by texel against a CPU model of it, the running average under a still
+// camera, that disoccluded pixels take no history and that a grazing floor
+// keeps it.
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -48,17 +49,34 @@ struct Hit {
     int surface = -1;  // 0 wall, 1 quad
 };
 
-Hit castPixel(const Scene& s, const Camera& c, uint32_t x, uint32_t y) {
+// The direction of the ray through pixel (x, y)'s centre.
+glm::vec3 rayThrough(const Camera& c, uint32_t x, uint32_t y) {
     const glm::mat4 inv = glm::inverse(c.viewProj());
     const glm::vec2 ndc((float(x) + 0.5f) / kW * 2.0f - 1.0f, (float(y) + 0.5f) / kH * 2.0f - 1.0f);
     const glm::vec4 far = inv * glm::vec4(ndc, 1.0f, 1.0f);
-    const glm::vec3 d = glm::normalize(glm::vec3(far) / far.w - c.position);
+    return glm::normalize(glm::vec3(far) / far.w - c.position);
+}
+
+Hit castPixel(const Scene& s, const Camera& c, uint32_t x, uint32_t y) {
+    const glm::vec3 d = rayThrough(c, x, y);
     Hit h;
     const glm::vec3 q = c.position + d * ((2.0f - c.position.z) / d.z);
     if (q.x >= s.x0 && q.x <= s.x1 && std::abs(q.y) <= 0.5f) return {true, q, 1};
     const glm::vec3 w = c.position + d * (-c.position.z / d.z);
     if (std::abs(w.y) <= 2.0f) return {true, w, 0};
     return h;
+}
+
+// A floor, y = kFloorY (normal +y), out to z = -60, seen by the same cameras
+// (which look horizontally): near the horizon it is seen at grazing angles.
+constexpr float kFloorY = -0.25f;
+
+Hit castFloor(const Camera& c, uint32_t x, uint32_t y) {
+    const glm::vec3 d = rayThrough(c, x, y);
+    if (d.y >= 0.0f) return {};
+    const glm::vec3 q = c.position + d * ((kFloorY - c.position.y) / d.y);
+    if (q.z < -60.0f || std::abs(q.x) > 50.0f) return {};
+    return {true, q, 0};
 }
 
 float toHalf(float v) { return glm::unpackHalf1x16(glm::packHalf1x16(v)); }
@@ -73,7 +91,9 @@ struct Frame {
     glm::mat4 viewProj{1.0f};
 };
 
-Frame makeFrame(const Scene& s, const Camera& c) {
+// The frame a camera sees of whatever `cast` hits, every surface facing `normal`.
+template <typename Cast>
+Frame makeFrameOf(const Camera& c, const Cast& cast, glm::vec3 normal) {
     Frame f;
     f.viewProj = c.viewProj();
     const size_t n = size_t(kW) * kH;
@@ -83,15 +103,23 @@ Frame makeFrame(const Scene& s, const Camera& c) {
     f.surface.assign(n, -1);
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x) {
-            const Hit h = castPixel(s, c, x, y);
+            const Hit h = cast(x, y);
             if (!h.found) continue;
             const glm::vec4 clip = f.viewProj * glm::vec4(h.point, 1.0f);
             const size_t i = size_t(y) * kW + x;
             f.depth[i] = clip.z / clip.w;
-            f.normal[i] = toHalf(glm::vec4(0, 0, 1, 1));
+            f.normal[i] = toHalf(glm::vec4(normal, 1.0f));
             f.surface[i] = h.surface;
         }
     return f;
+}
+
+Frame makeFrame(const Scene& s, const Camera& c) {
+    return makeFrameOf(c, [&](uint32_t x, uint32_t y) { return castPixel(s, c, x, y); }, glm::vec3(0, 0, 1));
+}
+
+Frame makeFloorFrame(const Camera& c) {
+    return makeFrameOf(c, [&](uint32_t x, uint32_t y) { return castFloor(c, x, y); }, glm::vec3(0, 1, 0));
 }
 
 struct Outputs {
@@ -203,6 +231,15 @@ private:
     render::TemporalState state_;
 };
 
+// The world point a camera `viewProj` saw at pixel t at view depth (clip w) `viewDepth`.
+glm::dvec3 pointSeen(const glm::dmat4& invViewProj, const glm::dmat4& viewProj, glm::ivec2 t, double viewDepth) {
+    const glm::dvec2 ndc((t.x + 0.5) / kW * 2.0 - 1.0, (t.y + 0.5) / kH * 2.0 - 1.0);
+    const glm::dvec4 nearH = invViewProj * glm::dvec4(ndc, 0.0, 1.0), farH = invViewProj * glm::dvec4(ndc, 1.0, 1.0);
+    const glm::dvec3 a = glm::dvec3(nearH) / nearH.w, b = glm::dvec3(farH) / farH.w;
+    const double wa = (viewProj * glm::dvec4(a, 1.0)).w, wb = (viewProj * glm::dvec4(b, 1.0)).w;
+    return a + (b - a) * ((viewDepth - wa) / (wb - wa));
+}
+
 // The CPU model of temporal_indirect.comp, in double precision, for a frame
 // whose blend weight is `alpha`. kind: 0 no geometry, 1 no history (off
 // screen or reset), 2 every history texel rejected, 3 blended. marginal:
@@ -224,6 +261,7 @@ Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const
     r.marginal.assign(n, false);
     // The matrices the GPU gets (the inverse computed in float, as uploaded).
     const glm::dmat4 inv(glm::inverse(f.viewProj)), vp(f.viewProj), prev(prevViewProj);
+    const glm::dmat4 prevInv = glm::inverse(prev);
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x) {
             const size_t i = size_t(y) * kW + x;
@@ -259,7 +297,9 @@ Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const
                     if (bw <= 0.0 || t.x < 0 || t.y < 0 || t.x >= int(kW) || t.y >= int(kH)) continue;
                     const size_t ti = size_t(t.y) * kW + size_t(t.x);
                     const glm::dvec4 s(surface[ti]);
-                    const double dz = std::abs(s.w - clip.w) / clip.w, cosine = glm::dot(glm::dvec3(s), nrm);
+                    // How far off this pixel's tangent plane the point last frame saw at the tap lies.
+                    const double dz = std::abs(glm::dot(pointSeen(prevInv, prev, t, s.w) - glm::dvec3(p), nrm)) / clip.w;
+                    const double cosine = glm::dot(glm::dvec3(s), nrm);
                     if (s.w > 0.0 && (std::abs(dz - sh::TEMPORAL_DEPTH_TOLERANCE) < 1e-4 ||
                                       std::abs(cosine - sh::TEMPORAL_NORMAL_COSINE) < 1e-4))
                         r.marginal[i] = true;
@@ -506,6 +546,51 @@ TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
     EXPECT_GT(uncovered, 50);
     EXPECT_GT(covered, 50);
     EXPECT_GT(kept, 500);
+}
+
+// A floor seen at a grazing angle by a camera that walks forward: near the
+// horizon the view depths of vertically neighbouring pixels differ by far more
+// than the tolerance, yet every floor pixel that last frame saw takes its
+// history, because a tap counts as the same surface when its point lies on
+// the pixel's tangent plane. (Comparing each tap's depth with the point's
+// rejected whole rows there, which then showed the raw gather.)
+TEST_F(TemporalIndirect, GrazingFloorKeepsItsHistory) {
+    constexpr int kBefore = 4;
+    constexpr float kMinAlpha = 0.1f;
+    const float alpha = render::temporalBlendWeight(kMinAlpha, kBefore);
+    const Camera previous{{0.0f, 0.0f, 0.0f}}, current{{0.0f, 0.0f, -0.05f}};
+    Frame f = makeFloorFrame(previous);
+    fill(f, 1.0f, 0.0f);
+    Harness h;
+    for (int k = 0; k < kBefore; ++k) h.run(f, kMinAlpha);
+    Frame g = makeFloorFrame(current);
+    fill(g, 2.0f, 0.0f);
+    const Outputs o = h.run(g, kMinAlpha);
+    const glm::mat4 prevVp = previous.viewProj(), inv = glm::inverse(g.viewProj);
+    int checked = 0, grazing = 0, bad = 0;
+    for (uint32_t y = 1; y + 1 < kH; ++y)
+        for (uint32_t x = 1; x + 1 < kW; ++x) {
+            const size_t i = size_t(y) * kW + x;
+            if (!sameSurfaceAround(f, g, x, y) || g.surface[i] < 0) continue;
+            // Where last frame's camera saw this pixel's point: on screen, and
+            // how much the view depth changes from one row to the next there.
+            const glm::vec2 ndc((x + 0.5f) / kW * 2.0f - 1.0f, (y + 0.5f) / kH * 2.0f - 1.0f);
+            const glm::vec4 w = inv * glm::vec4(ndc, g.depth[i], 1.0f);
+            const glm::vec4 clip = prevVp * glm::vec4(glm::vec3(w) / w.w, 1.0f);
+            const glm::vec2 q = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(kW, kH);
+            if (q.x < 1.0f || q.y < 1.0f || q.x > kW - 1.0f || q.y > kH - 1.0f) continue;
+            ++checked;
+            const float below = (prevVp * glm::vec4(castFloor(previous, uint32_t(q.x), uint32_t(q.y) + 1).point, 1.0f)).w;
+            if (std::abs(below - clip.w) > 2.0f * sh::TEMPORAL_DEPTH_TOLERANCE * clip.w) ++grazing;
+            const float expected = 1.0f + alpha * (2.0f - 1.0f);
+            if (!close(o.diffuse[i].r, expected, 1.5e-3) && ++bad <= 5)
+                std::printf("  (%u, %u): %g, expected %g\n", x, y, o.diffuse[i].r, expected);
+        }
+    std::printf("  %d floor pixels checked, %d where the next row's view depth differs by more than twice the "
+                "tolerance; %d wrong\n", checked, grazing, bad);
+    EXPECT_EQ(bad, 0);
+    EXPECT_GT(checked, 1000);
+    EXPECT_GT(grazing, 200);
 }
 
 // The frame count behind the weight: a hold of three frames restarts it, and
