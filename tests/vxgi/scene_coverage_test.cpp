@@ -21,9 +21,10 @@ TEST_P(SceneCoverage, CornellBox64) {
     const scene::Scene s = scene::builtinCornellBox();
     const auto items = scene::drawItems(s, scene::worldMatrices(s));
     const vxgi::GridSpec grid = vxgi::fitGrid(scene::worldBounds(s, items), 64);
-    // fitGrid leaves four voxels of margin, so the walls lie on voxel faces up
-    // to float rounding: the GPU's depth slack then marks the layers on both
-    // sides where the reference, exact on the rounded coordinates, may mark
+    // fitGrid puts the box's walls at voxel centres, but a plane halfway
+    // along the longest axis (an odd number of voxels) lies on a voxel face
+    // up to float rounding: the GPU's depth slack may then mark the layers on
+    // both sides where the reference, exact on the rounded coordinates, marks
     // one. Those extras stay within one voxel.
     glm::dvec3 lo(1e30), hi(-1e30);
     for (const Triangle& t : voxelTriangles(s, grid))
