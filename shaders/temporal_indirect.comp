@@ -88,7 +88,9 @@ void main() {
                     if (bw <= 0.0 || any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, size))) continue;
                     vec4 s = imageLoad(surfaceIn, t);
                     if (s.w <= 0.0 || dot(s.xyz, N) < pc.params.z) continue;
-                    if (abs(dot(pointSeenBefore(invPrev, t, size, s.w) - P.xyz, N)) > pc.params.y * clip.w) continue;
+                    // Written so that a NaN distance (a stored depth beyond half's range) rejects the texel.
+                    float off = abs(dot(pointSeenBefore(invPrev, t, size, s.w) - P.xyz, N));
+                    if (!(off <= pc.params.y * clip.w)) continue;
                     vec4 h = imageLoad(historyIn, t);
                     if (h.a < 1.0 || !finite(h)) continue;
                     sum += bw * h.rgb;

@@ -21,7 +21,7 @@ DVSGI_CONST(uint, BIND_TI_SURFACE_OUT, 7);
 
 struct TemporalIndirectPush {
     mat4 prevViewProj;  // last frame's camera (same clip space as FrameConstants.viewProj)
-    vec4 params;        // x this frame's blend weight (render::temporalBlendWeight), y relative depth tolerance,
+    vec4 params;        // x this frame's blend weight (render::temporalBlendWeight), y tangent-plane tolerance (of the view depth),
                         // z minimum cosine between normals, w largest sample count kept
     uvec4 flags;        // x width, y height (internal), z 1 = the history is valid (0: reset), w unused
 };
@@ -29,8 +29,8 @@ DVSGI_CHECK_SIZE(TemporalIndirectPush, 96);
 
 // A history texel is rejected where the point last frame saw there lies off
 // this pixel's tangent plane by more than 2 % of the view depth, or its normal
-// is more than about 25 degrees off (the flicker figure's own test of the same
-// surface, render/temporal_change.h).
+// is more than about 25 degrees off (the test the flicker figure applies to the
+// taps it interpolates, render/temporal_change.h).
 DVSGI_CONST(float, TEMPORAL_DEPTH_TOLERANCE, 0.02);
 DVSGI_CONST(float, TEMPORAL_NORMAL_COSINE, 0.9);
 DVSGI_CONST(float, TEMPORAL_MAX_SAMPLES, 255.0);

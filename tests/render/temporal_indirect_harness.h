@@ -4,6 +4,7 @@
 // run outside a Renderer one frame at a time.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>

@@ -122,8 +122,9 @@ TEST_F(TemporalIndirect, GrazingFloorKeepsItsHistory) {
             const glm::vec2 q = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(kW, kH);
             if (q.x < 1.0f || q.y < 1.0f || q.x > kW - 1.0f || q.y > kH - 1.0f) continue;
             ++checked;
-            const float below = (prevVp * glm::vec4(castFloor(previous, uint32_t(q.x), uint32_t(q.y) + 1).point, 1.0f)).w;
-            if (std::abs(below - clip.w) > 2.0f * sh::TEMPORAL_DEPTH_TOLERANCE * clip.w) ++grazing;
+            const Hit below = castFloor(previous, uint32_t(q.x), uint32_t(q.y) + 1);
+            const float belowDepth = (prevVp * glm::vec4(below.point, 1.0f)).w;
+            if (below.found && std::abs(belowDepth - clip.w) > 2.0f * sh::TEMPORAL_DEPTH_TOLERANCE * clip.w) ++grazing;
             const float expected = 1.0f + alpha * (2.0f - 1.0f);
             if (!close(o.diffuse[i].r, expected, 1.5e-3) && ++bad <= 5)
                 std::printf("  (%u, %u): %g, expected %g\n", x, y, o.diffuse[i].r, expected);
