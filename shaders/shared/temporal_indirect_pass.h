@@ -21,8 +21,9 @@ DVSGI_CONST(uint, BIND_TI_SURFACE_OUT, 7);
 
 struct TemporalIndirectPush {
     mat4 prevViewProj;  // last frame's camera (same clip space as FrameConstants.viewProj)
-    vec4 params;        // x this frame's blend weight (render::temporalBlendWeight), y tangent-plane tolerance (of the view depth),
-                        // z minimum cosine between normals, w largest sample count kept
+    vec4 params;        // x this frame's blend weight (render::temporalBlendWeight), y tangent-plane
+                        // tolerance (of the view depth), z minimum cosine between normals, w largest
+                        // sample count kept
     uvec4 flags;        // x width, y height (internal), z 1 = the history is valid (0: reset), w unused
 };
 DVSGI_CHECK_SIZE(TemporalIndirectPush, 96);

@@ -78,7 +78,8 @@ Reference reference(const Frame& f, const std::vector<glm::vec4>& history, const
                     const size_t ti = size_t(t.y) * kW + size_t(t.x);
                     const glm::dvec4 s(surface[ti]);
                     // How far off this pixel's tangent plane the point last frame saw at the tap lies.
-                    const double dz = std::abs(glm::dot(pointSeen(prevInv, prev, t, s.w) - glm::dvec3(p), nrm)) / clip.w;
+                    const glm::dvec3 seen = pointSeen(prevInv, prev, t, s.w);
+                    const double dz = std::abs(glm::dot(seen - glm::dvec3(p), nrm)) / clip.w;
                     const double cosine = glm::dot(glm::dvec3(s), nrm);
                     if (s.w > 0.0 && (std::abs(dz - sh::TEMPORAL_DEPTH_TOLERANCE) < 1e-4 ||
                                       std::abs(cosine - sh::TEMPORAL_NORMAL_COSINE) < 1e-4))
