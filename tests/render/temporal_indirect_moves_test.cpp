@@ -1,8 +1,9 @@
 // The temporal accumulation pass (render/temporal_indirect.h) alone, on
 // synthetic frames (temporal_indirect_harness.h) in which the surfaces or the
 // camera move: disoccluded pixels take no history, newly visible ones blend at
-// the frame's weight, a floor seen at grazing angles keeps its history, and
-// the frame count behind the weight.
+// the frame's weight, a floor seen at grazing angles keeps its history, a
+// texel whose stored depth overflowed is rejected, and the frame count behind
+// the weight.
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -134,6 +135,59 @@ TEST_F(TemporalIndirect, GrazingFloorKeepsItsHistory) {
     EXPECT_EQ(bad, 0);
     EXPECT_GT(checked, 1000);
     EXPECT_GT(grazing, 200);
+}
+
+// Last frame's stored view depth can overflow RGBA16F (beyond 65504 m it is
+// +inf): the point rebuilt from it is not finite, its distance to the tangent
+// plane may be NaN, and such a texel must be rejected like any other that
+// saw another surface. A block of history texels holding +inf: the pixels
+// whose four taps all lie in it keep this frame's term exactly, the others
+// blend.
+TEST_F(TemporalIndirect, OverflowedStoredDepthRejectsTheTexel) {
+    const Camera camera{{0.05f, 0.02f, 5.0f}};
+    const Scene scene;
+    Frame f = makeFrame(scene, camera);
+    fill(f, 2.0f, 2.0f);
+    const size_t n = size_t(kW) * kH;
+    std::vector<glm::vec4> history(n, glm::vec4(1.0f, 1.0f, 1.0f, 4.0f)), surface(n, glm::vec4(0.0f));
+    const glm::mat4 vp = f.viewProj, inv = glm::inverse(vp);
+    auto inBlock = [](uint32_t x, uint32_t y) { return x >= 40 && x < 56 && y >= 10 && y < 54; };
+    for (uint32_t y = 0; y < kH; ++y)
+        for (uint32_t x = 0; x < kW; ++x) {
+            const size_t i = size_t(y) * kW + x;
+            if (f.depth[i] >= 1.0f) continue;
+            const glm::vec2 ndc((x + 0.5f) / kW * 2.0f - 1.0f, (y + 0.5f) / kH * 2.0f - 1.0f);
+            const glm::vec4 w = inv * glm::vec4(ndc, f.depth[i], 1.0f);
+            const float depth = (vp * glm::vec4(glm::vec3(w) / w.w, 1.0f)).w;
+            surface[i] = toHalf(glm::vec4(0.0f, 0.0f, 1.0f, inBlock(x, y) ? 1e6f : depth));
+        }
+    ASSERT_TRUE(std::isinf(toHalf(1e6f)));
+    Harness h;
+    // The same camera last frame: every pixel reprojects onto itself.
+    h.setHistory(history, surface, vp, 4);
+    const float alpha = render::temporalBlendWeight(0.1f, 4);
+    const Outputs o = h.run(f, 0.1f);
+    int kept = 0, blended = 0, bad = 0;
+    for (uint32_t y = 1; y + 1 < kH; ++y)
+        for (uint32_t x = 1; x + 1 < kW; ++x) {
+            const size_t i = size_t(y) * kW + x;
+            if (f.surface[i] < 0 || !sameSurfaceAround(f, f, x, y)) continue;
+            // Inside the block by a pixel: every tap is an overflowed texel.
+            const bool rejected = inBlock(x - 1, y - 1) && inBlock(x + 1, y + 1);
+            const bool outside = !inBlock(x - 1, y - 1) && !inBlock(x + 1, y - 1) && !inBlock(x - 1, y + 1) &&
+                                 !inBlock(x + 1, y + 1);
+            if (!rejected && !outside) continue;
+            const float expected = rejected ? 2.0f : 1.0f + alpha * (2.0f - 1.0f);
+            (rejected ? kept : blended)++;
+            if (!std::isfinite(o.diffuse[i].r) || !close(o.diffuse[i].r, expected, 1.5e-3)) {
+                if (++bad <= 5) std::printf("  (%u, %u): %g, expected %g\n", x, y, o.diffuse[i].r, expected);
+            }
+        }
+    std::printf("  %d pixels with every tap overflowed kept this frame's term, %d blended; %d wrong\n", kept, blended,
+                bad);
+    EXPECT_EQ(bad, 0);
+    EXPECT_GT(kept, 300);
+    EXPECT_GT(blended, 1000);
 }
 
 // The frame count behind the weight: a hold of three frames restarts it, and
