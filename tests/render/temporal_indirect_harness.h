@@ -121,6 +121,14 @@ inline Frame makeFloorFrame(const Camera& c) {
     return makeFrameOf(c, [&](uint32_t x, uint32_t y) { return castFloor(c, x, y); }, glm::vec3(0, 1, 0));
 }
 
+// The world point frame f saw at pixel (x, y), rebuilt from its depth in float
+// as the pass rebuilds it (the pixel must hold geometry).
+inline glm::vec3 pointAt(const Frame& f, uint32_t x, uint32_t y) {
+    const glm::vec2 ndc((x + 0.5f) / kW * 2.0f - 1.0f, (y + 0.5f) / kH * 2.0f - 1.0f);
+    const glm::vec4 w = glm::inverse(f.viewProj) * glm::vec4(ndc, f.depth[size_t(y) * kW + x], 1.0f);
+    return glm::vec3(w) / w.w;
+}
+
 struct Outputs {
     std::vector<glm::vec4> diffuse, history, surface;
 };

@@ -109,7 +109,7 @@ TEST_F(TemporalIndirect, GrazingFloorKeepsItsHistory) {
     Frame g = makeFloorFrame(current);
     fill(g, 2.0f, 0.0f);
     const Outputs o = h.run(g, kMinAlpha);
-    const glm::mat4 prevVp = previous.viewProj(), inv = glm::inverse(g.viewProj);
+    const glm::mat4 prevVp = previous.viewProj();
     int checked = 0, grazing = 0, bad = 0;
     for (uint32_t y = 1; y + 1 < kH; ++y)
         for (uint32_t x = 1; x + 1 < kW; ++x) {
@@ -117,9 +117,7 @@ TEST_F(TemporalIndirect, GrazingFloorKeepsItsHistory) {
             if (!sameSurfaceAround(f, g, x, y) || g.surface[i] < 0) continue;
             // Where last frame's camera saw this pixel's point: on screen, and
             // how much the view depth changes from one row to the next there.
-            const glm::vec2 ndc((x + 0.5f) / kW * 2.0f - 1.0f, (y + 0.5f) / kH * 2.0f - 1.0f);
-            const glm::vec4 w = inv * glm::vec4(ndc, g.depth[i], 1.0f);
-            const glm::vec4 clip = prevVp * glm::vec4(glm::vec3(w) / w.w, 1.0f);
+            const glm::vec4 clip = prevVp * glm::vec4(pointAt(g, x, y), 1.0f);
             const glm::vec2 q = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(kW, kH);
             if (q.x < 1.0f || q.y < 1.0f || q.x > kW - 1.0f || q.y > kH - 1.0f) continue;
             ++checked;
@@ -150,15 +148,13 @@ TEST_F(TemporalIndirect, OverflowedStoredDepthRejectsTheTexel) {
     fill(f, 2.0f, 2.0f);
     const size_t n = size_t(kW) * kH;
     std::vector<glm::vec4> history(n, glm::vec4(1.0f, 1.0f, 1.0f, 4.0f)), surface(n, glm::vec4(0.0f));
-    const glm::mat4 vp = f.viewProj, inv = glm::inverse(vp);
+    const glm::mat4 vp = f.viewProj;
     auto inBlock = [](uint32_t x, uint32_t y) { return x >= 40 && x < 56 && y >= 10 && y < 54; };
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x) {
             const size_t i = size_t(y) * kW + x;
             if (f.depth[i] >= 1.0f) continue;
-            const glm::vec2 ndc((x + 0.5f) / kW * 2.0f - 1.0f, (y + 0.5f) / kH * 2.0f - 1.0f);
-            const glm::vec4 w = inv * glm::vec4(ndc, f.depth[i], 1.0f);
-            const float depth = (vp * glm::vec4(glm::vec3(w) / w.w, 1.0f)).w;
+            const float depth = (vp * glm::vec4(pointAt(f, x, y), 1.0f)).w;
             surface[i] = toHalf(glm::vec4(0.0f, 0.0f, 1.0f, inBlock(x, y) ? 1e6f : depth));
         }
     ASSERT_TRUE(std::isinf(toHalf(1e6f)));

@@ -119,7 +119,7 @@ TEST_F(TemporalIndirect, MatchesTheCpuModel) {
     const size_t n = size_t(kW) * kH;
     std::vector<glm::vec4> history(n), surface(n, glm::vec4(0.0f));
     const float counts[6] = {0.0f, 1.0f, 2.0f, 4.0f, 9.0f, 40.0f};
-    const glm::mat4 prevVp = previous.viewProj(), prevInv = glm::inverse(prevVp);
+    const glm::mat4 prevVp = previous.viewProj();
     for (uint32_t y = 0; y < kH; ++y)
         for (uint32_t x = 0; x < kW; ++x) {
             const size_t i = size_t(y) * kW + x;
@@ -134,9 +134,7 @@ TEST_F(TemporalIndirect, MatchesTheCpuModel) {
                                               float(x % 11) / 10.0f));
             if (before.depth[i] >= 1.0f) continue;
             // Last frame's view depth, as the pass stores it.
-            const glm::vec2 ndc((x + 0.5f) / kW * 2.0f - 1.0f, (y + 0.5f) / kH * 2.0f - 1.0f);
-            const glm::vec4 w = prevInv * glm::vec4(ndc, before.depth[i], 1.0f);
-            const float depth = (prevVp * glm::vec4(glm::vec3(w) / w.w, 1.0f)).w;
+            const float depth = (prevVp * glm::vec4(pointAt(before, x, y), 1.0f)).w;
             const bool turned = x >= 60 && x < 72 && y >= 36 && y < 48;
             surface[i] = toHalf(turned ? glm::vec4(0.6f, 0.0f, 0.8f, depth) : glm::vec4(0.0f, 0.0f, 1.0f, depth));
         }
