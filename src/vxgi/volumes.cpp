@@ -24,7 +24,7 @@ GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n) {
     // side puts walls on the scene's edge inside the grid, where cones cross
     // their whole trilinear footprint before leaving (with one voxel, cones
     // left through the edge cells of a closed box at partial opacity and lost
-    // energy), and at voxel centres: a plane on a voxel face touches the
+    // energy), and near voxel centres: a plane on a voxel face touches the
     // voxels on both sides, so walls on the bounds (rooms, the Cornell box)
     // were two voxels thick, half a voxel nearer every receiver, and indirect
     // light came out 4-19 % too bright per bounce (docs/quality.md).
@@ -34,10 +34,10 @@ GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n) {
     g.n = n;
     g.voxelSize = voxel;
     g.origin = (bounds.min + bounds.max) * 0.5f - glm::vec3(edge * 0.5f);
-    // The shorter axes too: their lower bound at a voxel centre.
+    // Every axis's lower bound kFitLatticeOffset from a voxel centre.
     for (int a = 0; a < 3; ++a) {
         const float k = (bounds.min[a] - g.origin[a]) / voxel;
-        g.origin[a] = bounds.min[a] - (std::floor(k) + 0.5f) * voxel;
+        g.origin[a] = bounds.min[a] - (std::floor(k) + 0.5f + kFitLatticeOffset) * voxel;
     }
     return g;
 }
