@@ -46,7 +46,9 @@ inline constexpr int kClipSnapVoxels = 8;
 // scene's longest side, so its window holds the whole scene from anywhere in it.
 float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels);
 // Where every level's voxels start: the scene's lower bounds at the centres of
-// level 0's voxels, as fitGrid places them (a wall on the bounds is then one
+// level 0's voxels (fitGrid puts them kFitLatticeOffset from the centres; a
+// clipmap's voxel is not tied to the bounds' extent, so no plane is drawn to
+// a face the way fitGrid's middle plane was). A wall on the bounds is then one
 // voxel layer, not two; the coarser levels' voxels hold it at a quarter, an
 // eighth, ... of their edge, never on a face). Levels share it, so they nest.
 glm::vec3 clipLattice(const scene::Bounds& bounds, float voxelSize0);

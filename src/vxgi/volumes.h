@@ -31,19 +31,22 @@ struct GridSpec {
 // A cube on the longest side of `bounds` plus four and a half voxels of margin
 // on every side, so surfaces on the bounds never sit on the grid's edge and
 // cones cross their whole footprint before leaving the grid. The lower bound
-// of every axis (and the upper one of the longest) lies kFitLatticeOffset of a
-// voxel from a voxel centre, so a wall on the bounds is one voxel layer, not
-// two: a plane on a voxel face touches the voxels on both sides.
+// of every axis, and the upper one of the longest, lies kFitLatticeOffset of a
+// voxel from a voxel centre, so a wall there is one voxel layer, not two (a
+// plane on a voxel face touches the voxels on both sides). The upper bounds of
+// the shorter axes fall wherever the scene's extent puts them.
 GridSpec fitGrid(const scene::Bounds& bounds, uint32_t n);
 // Why not at the centre itself: the longest axis spans N - 9 voxels, an odd
 // number for every power-of-two N, so its middle plane (the dividing wall of a
 // symmetric pair of rooms) would then lie on a voxel face and be voxelized two
 // layers thick. Shifted by this fraction it lies 0.05 of a voxel inside one,
-// and planes at other simple fractions of the bounds stay off the faces too
-// (test FitGrid.PlanesAtSimpleFractionsOfTheBoundsAreOffVoxelFaces). The
-// bounds then lie 0.45 of a voxel into their voxels; 0.55 was measured too and
-// moved cornell-lights by +1 %, as much as any placement of the lattice does
-// (docs/quality.md, "Where the grid falls on the scene").
+// and planes at a quarter or a third of the longest axis at least 0.11 (test
+// FitGrid.PlanesAtSimpleFractionsOfTheBoundsAreOffVoxelFaces). The lower
+// bounds then lie 0.45 of a voxel above their voxels' lower faces, and the
+// longest axis's upper bound 0.45 above its voxel's lower face (0.55 below
+// the outer one). 0.55 above was measured too and moved cornell-lights by
+// +1 %, within what any placement of the lattice does (docs/quality.md,
+// "Where the grid falls on the scene").
 inline constexpr float kFitLatticeOffset = -0.05f;
 // A cube on the longest side of a user-given box (no margin added).
 GridSpec gridForBox(const glm::vec3& boxMin, const glm::vec3& boxMax, uint32_t n);

@@ -71,7 +71,7 @@ TEST_F(ConeTracing, UniformlyEmissiveEnclosureGivesRhoL) {
                     maxErr);
         // Measured: means 1.6 % and 4.6 % low for 6 and 16 cones, worst pixels
         // 6.8 % and 7.6 %. The walls lie on the scene's bounds, which the grid
-        // now puts at voxel centres, so each is one voxel layer; they were two
+        // now puts near voxel centres, so each is one voxel layer; they were two
         // layers (on voxel faces) when this read 0.9 % / 1.8 % and 3.6 % / 2.9 %,
         // and cones lose more through one (docs/quality.md). Bounds 1.5x.
         const bool six = cones == sh::CONE_SET_6;

@@ -21,11 +21,12 @@ TEST_P(SceneCoverage, CornellBox64) {
     const scene::Scene s = scene::builtinCornellBox();
     const auto items = scene::drawItems(s, scene::worldMatrices(s));
     const vxgi::GridSpec grid = vxgi::fitGrid(scene::worldBounds(s, items), 64);
-    // fitGrid puts the box's walls at voxel centres, but a plane halfway
-    // along the longest axis (an odd number of voxels) lies on a voxel face
-    // up to float rounding: the GPU's depth slack may then mark the layers on
-    // both sides where the reference, exact on the rounded coordinates, marks
-    // one. Those extras stay within one voxel.
+    // fitGrid puts the box's lower walls 0.05 of a voxel off voxel centres
+    // (kFitLatticeOffset), which keeps the plane halfway along the longest
+    // axis off a voxel face; a plane elsewhere may still lie within float
+    // rounding of one, where the GPU's depth slack may mark the layers on both
+    // sides while the reference, exact on the rounded coordinates, marks one.
+    // expectCoverage allows such extras within one voxel.
     glm::dvec3 lo(1e30), hi(-1e30);
     for (const Triangle& t : voxelTriangles(s, grid))
         for (const glm::dvec3& v : t.v) lo = glm::min(lo, v), hi = glm::max(hi, v);
