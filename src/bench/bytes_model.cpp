@@ -29,13 +29,15 @@ constexpr uint64_t kHistoryBytes = 16 + 8;  // temporal history: RGBA32F sum, RG
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 
-// Anisotropic filtering of all levels: level 0 reads the radiance volume once
-// (the six directions share the reads), level l > 0 reads level l - 1 of each
-// of the six volumes; every level of the six is written.
-PassTraffic filtering(uint32_t n, const char* name) {
+// Anisotropic filtering of all levels: level 0 runs over the occupied-voxel
+// list and reads those voxels' radiance once (the six directions share the
+// reads; the empty voxels beside them in their cells are not counted), level
+// l > 0 reads level l - 1 of each of the six volumes; every level of the six
+// is written (level 0 by its clear and the occupied cells' composites, counted once).
+PassTraffic filtering(uint32_t n, uint64_t occupied, const char* name) {
     PassTraffic p{name};
     const uint32_t levels = vxgi::directionalMipCount(n);
-    p.readBytes = cube(n) * kVoxelLightBytes;
+    p.readBytes = occupied * (kListEntryBytes + kVoxelLightBytes);
     for (uint32_t l = 0; l < levels; ++l) {
         const uint64_t target = cube(std::max(uint64_t(n / 2) >> l, uint64_t(1)));
         p.writtenBytes += 6 * target * kVoxelLightBytes;
@@ -85,13 +87,13 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         // Direct light into the slot and the radiance volume.
         out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),
                        occupied * 2 * kVoxelLightBytes});
-        out.push_back(filtering(in.voxels, "voxel filtering"));
+        out.push_back(filtering(in.voxels, occupied, "voxel filtering"));
         // Cone samples are not counted: the bytes are those of the voxel's own
         // attributes, direct light and result.
         out.push_back({"voxel bounce",
                        bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kVoxelLightBytes),
                        bounces * occupied * kVoxelLightBytes});
-        PassTraffic again = filtering(in.voxels, "voxel filtering (bounce)");
+        PassTraffic again = filtering(in.voxels, occupied, "voxel filtering (bounce)");
         again.readBytes *= bounces;
         again.writtenBytes *= bounces;
         out.push_back(again);

@@ -38,42 +38,64 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::AnisoPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kAniso), layout, "anisotropic filtering");
-    base_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoBase), layout, "anisotropic filtering (base level)");
     layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                                                   {sh::BIND_ANISO_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                                                   {sh::BIND_ANISO_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                                                   {sh::BIND_ANISO_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                                                    {sh::BIND_ANISO_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}});
+    base_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoBase), layout, "anisotropic filtering (base level)");
+    layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                                                   {sh::BIND_ANISO_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                                                   {sh::BIND_ANISO_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}});
     twoSided_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoTwoSided), layout, "anisotropic filtering (two-sided voxels)");
 }
 
 void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
                              gpu::GpuTimers* timers, const char* timerName) const {
     gpu::GpuTimerScope timer(timers, cmd, timerName);
-    for (uint32_t level = 0; level < v.directionalMips; ++level) {
-        // Level 0 reads the radiance volume, every other level the one below it.
-        // At level 0 the unused source binding still needs a valid view: it
-        // gets the target level itself, so that level is declared read as
-        // well as written.
-        const VkImageView source = v.directional.mipView(level == 0 ? 0 : level - 1);
-        if (level == 0) tracker.image(v.radiance, gpu::use::ComputeRead);
-        if (level > 0) tracker.imageMip(v.directional, level - 1, gpu::use::ComputeRead);
-        tracker.imageMip(v.directional, level, level == 0 ? gpu::use::ComputeReadWrite : gpu::use::ComputeWrite, true);
+    recordBase(cmd, tracker, v);
+    recordTwoSided(cmd, tracker, v);
+    for (uint32_t level = 1; level < v.directionalMips; ++level) {
+        // Each level reads the one below it.
+        tracker.imageMip(v.directional, level - 1, gpu::use::ComputeRead);
+        tracker.imageMip(v.directional, level, gpu::use::ComputeWrite, true);
         tracker.flush(cmd);
-        const gpu::Pipeline& pipeline = level == 0 ? base_ : pipeline_;
-        gpu::bind(cmd, pipeline);
+        gpu::bind(cmd, pipeline_);
         gpu::Descriptors()
             .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
-            .storageImage(sh::BIND_ANISO_SOURCE_DIRS, source)
+            .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(level - 1))
             .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(level))
-            .push(ctx_, cmd, pipeline);
+            .push(ctx_, cmd, pipeline_);
         const uint32_t size = std::max((v.grid.n / 2) >> level, 1u);
         const sh::AnisoPush push{glm::uvec4(size, 0u, 0u, 0u)};
-        gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         const uint32_t groups = gpu::groupCount(size, sh::ANISO_GROUP);
         vkCmdDispatch(cmd, groups, groups, groups);
-        if (level == 0) recordTwoSided(cmd, tracker, v);
     }
+}
+
+// The base level: cleared, then each cell that holds an occupied voxel
+// composited once, by the cell's first occupied voxel in the list
+// (aniso_filter.comp, DVSGI_BASE_LEVEL).
+void AnisoFilterPass::recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
+    tracker.imageMip(v.directional, 0, gpu::use::ClearGeneral, true).flush(cmd);
+    const VkClearColorValue zero{};
+    const VkImageSubresourceRange mip0{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(cmd, v.directional.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &mip0);
+    tracker.image(v.radiance, gpu::use::ComputeRead)
+        .buffer(v.list, gpu::use::IndirectComputeRead)
+        .imageMip(v.directional, 0, gpu::use::ComputeReadWrite)
+        .flush(cmd);
+    gpu::bind(cmd, base_);
+    // The unused upper-level source still needs a valid view: the target
+    // level itself, declared read as well as written above.
+    gpu::Descriptors()
+        .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
+        .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(0))
+        .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(0))
+        .uniformBuffer(sh::BIND_ANISO_GRID, v.gridBuffer.handle())
+        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle())
+        .push(ctx_, cmd, base_);
+    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 0u, 0u, 0u)};
+    gpu::pushConstants(cmd, base_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }
 
 // The cells holding two-sided voxels, again (aniso_filter.comp, DVSGI_TWO_SIDED).

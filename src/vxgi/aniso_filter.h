@@ -16,18 +16,20 @@ class VoxelVolumes;
 class AnisoFilterPass {
 public:
     explicit AnisoFilterPass(const gpu::Context& ctx);
-    // Reads `radiance`, writes every level of the directional volumes; the
-    // cells that hold two-sided voxels (lib/voxel_sides.glsl) are written
-    // again from the voxels' side light before the next level.
+    // Reads `radiance` (and the occupied-voxel list: the base level is
+    // composited only where voxels are), writes every level of the directional
+    // volumes; the cells that hold two-sided voxels (lib/voxel_sides.glsl) are
+    // written again from the voxels' side light before the next level.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, gpu::GpuTimers* timers,
                 const char* timerName) const;
 
 private:
+    void recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
     void recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
 
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_;  // levels above the base: read the level below
-    gpu::Pipeline base_;      // the base level: reads the radiance volume
+    gpu::Pipeline base_;      // the base level: reads the radiance volume, over the list
     gpu::Pipeline twoSided_;
 };
 

@@ -4,10 +4,14 @@
 #include <cstdio>
 #include <random>
 
+#include <glm/gtc/packing.hpp>
+
 #include "gpu/context.h"
+#include "gpu/transfer.h"
 #include "gpu_fixture.h"
 #include "light_helpers.h"
 #include "vxgi/aniso_filter.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 namespace {
@@ -30,12 +34,34 @@ Rgba16Volume randomRadiance(uint32_t n, uint32_t seed) {
     for (glm::vec4& t : v.texels) {
         const int k = kind(rng);
         const float a = k == 0 ? 0.0f : (k == 1 ? u01(rng) : 1.0f);
-        t = toHalf(glm::vec4(rgb(rng), rgb(rng), rgb(rng), a));
+        const glm::vec4 c(rgb(rng), rgb(rng), rgb(rng), a);
+        // Premultiplied: an empty voxel holds no light.
+        t = a > 0.0f ? toHalf(c) : glm::vec4(0.0f);
     }
     return v;
 }
 
-void filter(const vxgi::VoxelVolumes& volumes) {
+// Volumes with a slot for every voxel, so any radiance can be listed.
+vxgi::VoxelVolumes volumesFor(uint32_t n) { return vxgi::VoxelVolumes(context(), grid(n), n * n * n); }
+
+// What voxelization leaves for `radiance`: every voxel with opacity occupied
+// and in the list (the filter's base level runs over it), each one-sided in
+// its direct light's side code, so the two-sided pass leaves it alone.
+void uploadOccupancy(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance) {
+    vxgi::DenseAttributes a(radiance.n);
+    for (int z = 0; z < int(radiance.n); ++z)
+        for (int y = 0; y < int(radiance.n); ++y)
+            for (int x = 0; x < int(radiance.n); ++x)
+                if (radiance.at(x, y, z).a > 0.0f) a.at(x, y, z, shader::CH_COUNT) = 1.0f;
+    vxgi::uploadAttributes(context(), volumes, a);
+    const std::vector<uint64_t> oneSided(volumes.slots, glm::packHalf4x16(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)));
+    gpu::uploadImage(context(), volumes.direct, oneSided.data(), oneSided.size() * sizeof(uint64_t),
+                     gpu::use::ComputeReadWrite);
+}
+
+void filter(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance) {
+    uploadRgba16(volumes.radiance, radiance);
+    uploadOccupancy(volumes, radiance);
     const vxgi::AnisoFilterPass pass(context());
     gpu::Tracker tracker = volumeTracker(volumes);
     context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, nullptr, "test filter"); });
@@ -66,10 +92,9 @@ class AnisoFilter : public GpuTest {};
 // Filters `radiance` (32^3) and checks every direction and level against the host.
 void expectEveryLevelMatchesTheRule(const Rgba16Volume& radiance) {
     constexpr uint32_t kN = 32;
-    const vxgi::VoxelVolumes volumes(context(), grid(kN));
+    const vxgi::VoxelVolumes volumes = volumesFor(kN);
     ASSERT_EQ(volumes.directionalMips, 5u);  // 16^3 .. 1^3
-    uploadRgba16(volumes.radiance, radiance);
-    filter(volumes);
+    filter(volumes, radiance);
     int failed = 0;
     for (int dir = 0; dir < 6; ++dir) {
         double worstGpuChain = 0.0, worstHostChain = 0.0;
@@ -105,8 +130,10 @@ void expectEveryLevelMatchesTheRule(const Rgba16Volume& radiance) {
 
 TEST_F(AnisoFilter, EveryDirectionAndLevelMatchesTheRule) { expectEveryLevelMatchesTheRule(randomRadiance(32, 3)); }
 
-// A sparse grid, as scenes are: most 2^3 blocks are all zero and take the
-// shader's early exit, which must give what the rule gives, next to occupied ones.
+// A sparse grid, as scenes are: most 2^3 blocks are all zero. The base level
+// composites only the cells its list names and leaves the rest cleared, and
+// the upper levels take the shader's early exit; both must give what the rule
+// gives, next to occupied cells.
 TEST_F(AnisoFilter, SparseGridMatchesTheRuleInEmptyAndOccupiedCells) {
     const Rgba16Volume dense = randomRadiance(32, 5);
     Rgba16Volume sparse = dense;
@@ -122,18 +149,42 @@ TEST_F(AnisoFilter, SparseGridMatchesTheRuleInEmptyAndOccupiedCells) {
     expectEveryLevelMatchesTheRule(sparse);
 }
 
+// The base level runs only over the listed voxels: cells that held voxels in
+// the last filtering and hold none now must come out empty, not stale.
+TEST_F(AnisoFilter, FilteringAgainEmptiesCellsThatLostTheirVoxels) {
+    constexpr uint32_t kN = 16;
+    const vxgi::VoxelVolumes volumes = volumesFor(kN);
+    filter(volumes, randomRadiance(kN, 7));
+    Rgba16Volume one;
+    one.n = kN;
+    one.texels.assign(size_t(kN) * kN * kN, glm::vec4(0.0f));
+    one.at(5, 6, 7) = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
+    filter(volumes, one);
+    int nonEmpty = 0;
+    for (int dir = 0; dir < 6; ++dir) {
+        const Rgba16Volume got = readDirectional(volumes, uint32_t(dir), 0);
+        for (int z = 0; z < int(got.n); ++z)
+            for (int y = 0; y < int(got.n); ++y)
+                for (int x = 0; x < int(got.n); ++x)
+                    if (got.at(x, y, z) != glm::vec4(0.0f)) {
+                        ++nonEmpty;
+                        EXPECT_EQ(glm::ivec3(x, y, z), glm::ivec3(2, 3, 3)) << "direction " << dir;
+                    }
+    }
+    EXPECT_EQ(nonEmpty, 6);  // the one cell, in each direction
+}
+
 // The direction convention, by hand: two voxels side by side along x, a half-
 // transparent red one at x = 0 and an opaque green one at x = 1.
 TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
     constexpr uint32_t kN = 16;
-    const vxgi::VoxelVolumes volumes(context(), grid(kN));
+    const vxgi::VoxelVolumes volumes = volumesFor(kN);
     Rgba16Volume radiance;
     radiance.n = kN;
     radiance.texels.assign(size_t(kN) * kN * kN, glm::vec4(0.0f));
     radiance.at(0, 0, 0) = glm::vec4(0.5f, 0.0f, 0.0f, 0.5f);  // premultiplied
     radiance.at(1, 0, 0) = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
-    uploadRgba16(volumes.radiance, radiance);
-    filter(volumes);
+    filter(volumes, radiance);
     auto level0 = [&](int dir) { return readDirectional(volumes, uint32_t(dir), 0).at(0, 0, 0); };
     auto expectVec = [](glm::vec4 got, glm::vec4 want, const char* what) {
         for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ(got[c], want[c]) << what << " channel " << c;
