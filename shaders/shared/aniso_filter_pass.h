@@ -12,13 +12,14 @@ DVSGI_BEGIN
 DVSGI_CONST(uint, BIND_ANISO_SOURCE, 0);      // base: radiance; upper levels: unused
 DVSGI_CONST(uint, BIND_ANISO_SOURCE_DIRS, 1); // upper levels: the volumes' level l - 1
 DVSGI_CONST(uint, BIND_ANISO_TARGET_DIRS, 2); // the volumes' level written
+// The base level and the two-sided pass run over the occupied-voxel list:
+DVSGI_CONST(uint, BIND_ANISO_GRID, 3);    // VoxelGrid (the list's and the index's toroidal addressing)
+DVSGI_CONST(uint, BIND_ANISO_LIST, 7);    // occupied-voxel list: one invocation per entry
 // The two-sided pass (aniso_filter.comp with DVSGI_TWO_SIDED) only: which voxels
 // are two-sided and their light per side.
-DVSGI_CONST(uint, BIND_ANISO_GRID, 3);    // VoxelGrid (the index's toroidal addressing)
 DVSGI_CONST(uint, BIND_ANISO_INDEX, 4);   // slot index
 DVSGI_CONST(uint, BIND_ANISO_DIRECT, 5);  // per-slot direct light: a = 1 + side code
 DVSGI_CONST(uint, BIND_ANISO_SIDES, 6);   // per-slot side light (lib/voxel_sides.glsl)
-DVSGI_CONST(uint, BIND_ANISO_LIST, 7);    // occupied-voxel list: one invocation per entry
 
 struct AnisoPush {
     uvec4 sizes;  // x target size (voxels per edge), yzw unused (the base level is a variant of its own)

@@ -34,9 +34,9 @@ Rgba16Volume randomRadiance(uint32_t n, uint32_t seed) {
     for (glm::vec4& t : v.texels) {
         const int k = kind(rng);
         const float a = k == 0 ? 0.0f : (k == 1 ? u01(rng) : 1.0f);
-        const glm::vec4 c(rgb(rng), rgb(rng), rgb(rng), a);
-        // Premultiplied: an empty voxel holds no light.
-        t = a > 0.0f ? toHalf(c) : glm::vec4(0.0f);
+        const glm::vec4 c = toHalf(glm::vec4(rgb(rng), rgb(rng), rgb(rng), a));
+        // Premultiplied: an empty voxel (opacity 0 once in fp16) holds no light.
+        t = c.a > 0.0f ? c : glm::vec4(0.0f);
     }
     return v;
 }
