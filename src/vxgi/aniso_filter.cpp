@@ -71,6 +71,29 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
     }
 }
 
+// What both passes over level 0 bind: the radiance, level 0 itself (also as
+// the unused upper-level source, which needs a valid view; the passes declare
+// it read as well as written), the grid and the list.
+gpu::Descriptors AnisoFilterPass::levelZeroBindings(const VoxelVolumes& v) {
+    gpu::Descriptors d;
+    d.storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
+        .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(0))
+        .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(0))
+        .uniformBuffer(sh::BIND_ANISO_GRID, v.gridBuffer.handle())
+        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle());
+    return d;
+}
+
+// One invocation per list entry of `pipeline` over level 0.
+void AnisoFilterPass::dispatchOverLevelZero(VkCommandBuffer cmd, const gpu::Pipeline& pipeline,
+                                            const gpu::Descriptors& bindings, const VoxelVolumes& v) const {
+    gpu::bind(cmd, pipeline);
+    bindings.push(ctx_, cmd, pipeline);
+    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 0u, 0u, 0u)};
+    gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+}
+
 // The base level: cleared, then each cell that holds an occupied voxel
 // composited once, by the cell's first occupied voxel in the list
 // (aniso_filter.comp, DVSGI_BASE_LEVEL).
@@ -83,19 +106,7 @@ void AnisoFilterPass::recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, con
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .imageMip(v.directional, 0, gpu::use::ComputeReadWrite)
         .flush(cmd);
-    gpu::bind(cmd, base_);
-    // The unused upper-level source still needs a valid view: the target
-    // level itself, declared read as well as written above.
-    gpu::Descriptors()
-        .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
-        .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(0))
-        .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(0))
-        .uniformBuffer(sh::BIND_ANISO_GRID, v.gridBuffer.handle())
-        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle())
-        .push(ctx_, cmd, base_);
-    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 0u, 0u, 0u)};
-    gpu::pushConstants(cmd, base_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+    dispatchOverLevelZero(cmd, base_, levelZeroBindings(v), v);
 }
 
 // The cells holding two-sided voxels, again (aniso_filter.comp, DVSGI_TWO_SIDED).
@@ -106,20 +117,11 @@ void AnisoFilterPass::recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker,
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .imageMip(v.directional, 0, gpu::use::ComputeReadWrite)
         .flush(cmd);
-    gpu::bind(cmd, twoSided_);
-    gpu::Descriptors()
-        .storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
-        .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(0))
-        .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(0))
-        .uniformBuffer(sh::BIND_ANISO_GRID, v.gridBuffer.handle())
-        .storageBuffer(sh::BIND_ANISO_INDEX, v.index.handle())
+    gpu::Descriptors bindings = levelZeroBindings(v);
+    bindings.storageBuffer(sh::BIND_ANISO_INDEX, v.index.handle())
         .storageImage(sh::BIND_ANISO_DIRECT, v.direct.view())
-        .storageImage(sh::BIND_ANISO_SIDES, v.sides.view())
-        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle())
-        .push(ctx_, cmd, twoSided_);
-    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 0u, 0u, 0u)};
-    gpu::pushConstants(cmd, twoSided_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+        .storageImage(sh::BIND_ANISO_SIDES, v.sides.view());
+    dispatchOverLevelZero(cmd, twoSided_, bindings, v);
 }
 
 }  // namespace dvsgi::vxgi

@@ -24,6 +24,9 @@ public:
                 const char* timerName) const;
 
 private:
+    static gpu::Descriptors levelZeroBindings(const VoxelVolumes& volumes);
+    void dispatchOverLevelZero(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const gpu::Descriptors& bindings,
+                               const VoxelVolumes& volumes) const;
     void recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
     void recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;
 
