@@ -134,9 +134,9 @@ std::vector<Setting> conesAndCommands() {
                     FIELD(settings.temporal.enabled)),
              "off"),
         with(number({"temporal-alpha", kCones, "A", "",
-                     "smallest weight of this frame's indirect term in the blend: alpha = max(1/(n+1), A) for "
-                     "every pixel, n the frames since the history restarted (the plain mean of the first 1/A "
-                     "frames, then an exponential average; 1 = no accumulation)",
+                     "weight of this frame's indirect term in the blend, the same for every pixel from the "
+                     "history's first frame on: an exponential average over about 1/A frames (1 = no "
+                     "accumulation)",
                      kAll, kFrame},
                     0.01, 1, FIELD(settings.temporal.minAlpha)),
              "0.25", "a weight in 0.01..1"),

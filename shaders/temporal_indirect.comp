@@ -13,8 +13,9 @@
 // rejecting it there dropped the history of whole strips of floor, whose raw
 // gather then set the walk's flicker. With any such texel the output is
 // mix(history, current, alpha), one alpha for the whole frame
-// (render::temporalBlendWeight: the running mean of the frames since the
-// history restarted, until 1/alphaMin of them, an exponential average after);
+// (render::temporalBlendWeight: alphaMin once the voxel light has settled;
+// while it still climbs frame by frame, the running mean of the frames since
+// the history restarted, until 1/alphaMin of them, an exponential average after);
 // with none (disocclusion, off screen, the first frame, a reset) the current
 // value stays as the gather wrote it and the pixel's count restarts at 1.
 // A pixel that has just come into view blends at the frame's alpha from its

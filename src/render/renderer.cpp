@@ -381,8 +381,13 @@ void Renderer::recordTemporal(VkCommandBuffer cmd) {
     }
     FrameTargets& f = *targets_;
     TemporalState& s = temporalState_;
+    // Only feedback bounces from the first frame leave the voxel light
+    // climbing while the history runs: a converging render settles it in its
+    // first frame, and after a change the history is held back until it settles.
+    const bool lightClimbs = voxelizer_ && settings_.voxelLight.bounceMode == vxgi::BounceMode::Feedback;
     const TemporalIndirectInputs in{f.gbuffer, *samplers_, *frame_, f.temporal.color[s.previous],
-                                    f.temporal.surface[s.previous], s.previousViewProj, s.valid, s.frames};
+                                    f.temporal.surface[s.previous], s.previousViewProj, s.valid, s.frames,
+                                    lightClimbs};
     const TemporalIndirectTargets out{f.diffuse, f.temporal.color[1 - s.previous], f.temporal.surface[1 - s.previous]};
     temporal_->record(cmd, tracker_, in, out, settings_.temporal, timers_.get());
     s.advance(viewProjection());

@@ -64,7 +64,7 @@ void TemporalIndirectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, co
         .push(ctx_, cmd, pipeline_);
     sh::TemporalIndirectPush push{};
     push.prevViewProj = in.previousViewProj;
-    push.params = glm::vec4(temporalBlendWeight(s.minAlpha, in.historyFrames), sh::TEMPORAL_DEPTH_TOLERANCE,
+    push.params = glm::vec4(temporalBlendWeight(s.minAlpha, in.historyFrames, in.lightClimbs), sh::TEMPORAL_DEPTH_TOLERANCE,
                             sh::TEMPORAL_NORMAL_COSINE, sh::TEMPORAL_MAX_SAMPLES);
     push.flags = glm::uvec4(width, height, in.historyValid ? 1u : 0u, 0u);
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);

@@ -24,14 +24,21 @@ namespace dvsgi::render {
 
 struct TemporalSettings {
     bool enabled = true;   // off: the gather's term goes to the composite as it is
-    float minAlpha = 0.05f; // smallest weight of this frame's term (reached after 1/minAlpha - 1 frames)
+    float minAlpha = 0.05f; // weight of this frame's term (from the start once the voxel light has settled: temporalBlendWeight)
 };
 
 // The weight of this frame's term when the history holds `historyFrames`
-// frames, the same for every pixel: the running mean of the frames since the
-// history (re)started, until 1/minAlpha of them, then an exponential average.
-inline float temporalBlendWeight(float minAlpha, uint32_t historyFrames) {
-    return std::max(1.0f / float(historyFrames + 1u), minAlpha);
+// frames, the same for every pixel. While the voxel light still climbs from
+// frame to frame with nothing dropped (feedback bounces from the first frame),
+// the running mean of the frames since the history (re)started, until
+// 1/minAlpha of them, then an exponential average: the term follows the light
+// within the frames it has. Once the light has settled (it converged, or the
+// history was held back while it settled), minAlpha from the first frame on:
+// the gathers then differ only in how a moving camera's pixels sample the
+// surfaces, and averaging those fast moved every pixel by half, a third, ...
+// of that difference in the frames after a restart (docs/benchmarks.md).
+inline float temporalBlendWeight(float minAlpha, uint32_t historyFrames, bool lightClimbs) {
+    return lightClimbs ? std::max(1.0f / float(historyFrames + 1u), minAlpha) : minAlpha;
 }
 
 struct TemporalIndirectInputs {
@@ -43,6 +50,7 @@ struct TemporalIndirectInputs {
     glm::mat4 previousViewProj;  // last frame's camera, as FrameConstants::viewProj
     bool historyValid;           // false: first frame or a reset, the history is not read
     uint32_t historyFrames;      // frames the history holds (when valid)
+    bool lightClimbs;            // the voxel light may still grow frame by frame (temporalBlendWeight)
 };
 
 struct TemporalIndirectTargets {

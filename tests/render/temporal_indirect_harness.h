@@ -187,6 +187,9 @@ public:
     }
 
     void resetHistory() { state_.reset(); }
+    // Whether the pass is told that the voxel light still climbs (the
+    // running mean after a restart, render::temporalBlendWeight).
+    void setLightClimbs(bool climbs) { lightClimbs_ = climbs; }
 
     Outputs run(const Frame& f, float minAlpha) {
         sh::FrameConstants fc{};
@@ -200,7 +203,8 @@ public:
         upload(diffuse_, d.data(), d.size() * 2, gpu::use::ComputeReadWrite);
         const int p = int(state_.previous);
         const render::TemporalIndirectInputs in{g_, samplers_, frame_, history_[p], surface_[p],
-                                                state_.previousViewProj, state_.valid, state_.frames};
+                                                state_.previousViewProj, state_.valid, state_.frames,
+                                                lightClimbs_};
         const render::TemporalIndirectTargets out{diffuse_, history_[1 - p], surface_[1 - p]};
         render::TemporalSettings s;
         s.minAlpha = minAlpha;
@@ -236,6 +240,7 @@ private:
     gpu::Image diffuse_, history_[2], surface_[2];
     gpu::Tracker tracker_;
     render::TemporalState state_;
+    bool lightClimbs_ = true;  // the tests of the running mean; setLightClimbs(false) for a settled light
 };
 
 inline bool close(float gpu, float ref, double relative) {

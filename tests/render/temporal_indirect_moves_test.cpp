@@ -58,7 +58,7 @@ TEST_F(TemporalIndirect, DisocclusionRejectsHistory) {
 TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
     constexpr int kBefore = 4;
     constexpr float kMinAlpha = 0.1f;
-    const float alpha = render::temporalBlendWeight(kMinAlpha, kBefore + 1);
+    const float alpha = render::temporalBlendWeight(kMinAlpha, kBefore + 1, true);
     ASSERT_FLOAT_EQ(alpha, 1.0f / 6.0f);
     const Camera camera{{0.0f, 0.0f, 5.0f}};
     const Scene a{-0.9f, 0.0f}, b{-0.4f, 0.5f};
@@ -100,7 +100,7 @@ TEST_F(TemporalIndirect, NewlyVisiblePixelsBlendAtTheFramesWeight) {
 TEST_F(TemporalIndirect, GrazingFloorKeepsItsHistory) {
     constexpr int kBefore = 4;
     constexpr float kMinAlpha = 0.1f;
-    const float alpha = render::temporalBlendWeight(kMinAlpha, kBefore);
+    const float alpha = render::temporalBlendWeight(kMinAlpha, kBefore, true);
     const Camera previous{{0.0f, 0.0f, 0.0f}}, current{{0.0f, 0.0f, -0.05f}};
     Frame f = makeFloorFrame(previous);
     fill(f, 1.0f, 0.0f);
@@ -161,7 +161,7 @@ TEST_F(TemporalIndirect, OverflowedStoredDepthRejectsTheTexel) {
     Harness h;
     // The same camera last frame: every pixel reprojects onto itself.
     h.setHistory(history, surface, vp, 4);
-    const float alpha = render::temporalBlendWeight(0.1f, 4);
+    const float alpha = render::temporalBlendWeight(0.1f, 4, true);
     const Outputs o = h.run(f, 0.1f);
     int kept = 0, blended = 0, bad = 0;
     for (uint32_t y = 1; y + 1 < kH; ++y)
@@ -206,15 +206,16 @@ TEST(TemporalState, HistoryFramesRestartAfterAHold) {
     }
     s.beginFrame();
     ASSERT_TRUE(s.valid);
-    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames), 0.5f);
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames, true), 0.5f);
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames, false), 0.05f);  // a settled light
     s.advance(vp);
     s.beginFrame();
-    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames), 1.0f / 3.0f);
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames, true), 1.0f / 3.0f);
     for (int k = 0; k < 100; ++k) {
         s.advance(vp);
         s.beginFrame();
     }
-    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames), 0.05f);
+    EXPECT_FLOAT_EQ(render::temporalBlendWeight(0.05f, s.frames, true), 0.05f);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Temporal accumulation of the indirect term inside the Renderer
 // (--temporal-indirect): a single frame is unchanged, a still camera averages
-// the frames, a light switched off leaves no ghost in the accumulated term,
-// and a moved object's light reaches it within a stated number of frames.
+// the frames while the voxel light climbs, a settled light blends at alphaMin
+// from the start, a light switched off leaves no ghost in the accumulated
+// term, and a moved object's light reaches it within a stated number of frames.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -210,6 +211,46 @@ TEST_F(TemporalRenderer, MovedObjectsLightFollowsWithinAStatedNumberOfFrames) {
     EXPECT_LT(before, 0.005);
     ASSERT_GT(after.front(), 0.05);  // the move does change the picture
     EXPECT_LE(int(after.size()), kFollowFrames);
+}
+
+// A converging render settles the voxel light in its first frame, so the
+// history blends at alphaMin from the frame after: a dynamic panel moved
+// after frame 1 moves the accumulated term by alphaMin of the plain term's
+// change, not by half (the running mean that only a light still climbing
+// from frame to frame needs, TemporalRenderer.StillCameraAveragesTheFrames).
+// The panel hangs above the light, behind the camera, so every pixel keeps
+// its history and only its light on the box changes.
+TEST_F(TemporalRenderer, SettledLightBlendsAtAlphaMinFromTheStart) {
+    scene::Scene s = litBox();
+    const int panel = addQuad(s, addMaterial(s, glm::vec3(1.0f), glm::vec3(0.0f), true), glm::vec3(-0.3f, 0.55f, 0.0f),
+                              0.25f, glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)));
+    s.nodes[size_t(panel)].dynamic = true;
+    ASSERT_EQ(boxSettings(true).voxelLight.bounceMode, vxgi::BounceMode::Converge);
+    render::Renderer acc(context(), s, boxSettings(true)), plain(context(), s, boxSettings(false));
+    acc.renderFrame();
+    plain.renderFrame();
+    const image::ImageRGBA32F first = acc.readTerm(sh::TERM_INDIRECT);
+    for (render::Renderer* r : {&acc, &plain}) {
+        r->scene().nodes[size_t(panel)].translation.x = 0.3f;
+        r->sceneChanged();
+    }
+    acc.renderFrame();
+    plain.renderFrame();
+    const image::ImageRGBA32F a = acc.readTerm(sh::TERM_INDIRECT), p = plain.readTerm(sh::TERM_INDIRECT);
+    // The weight w of acc = first + w (plain - first), fitted by least squares.
+    double num = 0.0, den = 0.0, moved = 0.0;
+    for (size_t i = 0; i < p.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            const double change = double(p.rgba[4 * i + c]) - first.rgba[4 * i + c];
+            num += (double(a.rgba[4 * i + c]) - first.rgba[4 * i + c]) * change;
+            den += change * change;
+            moved += std::abs(change) / 3.0;
+        }
+    const double weight = num / den;
+    std::printf("  the plain term moved by %.2f %% of its mean; the accumulated term by %.4f of that\n",
+                100.0 * moved / double(p.pixelCount()) / meanLuminance(p), weight);
+    ASSERT_GT(moved / double(p.pixelCount()), 0.05 * meanLuminance(p));  // the move does change the picture
+    EXPECT_NEAR(weight, 0.05, 0.005);
 }
 
 }  // namespace
