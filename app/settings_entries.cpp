@@ -210,7 +210,7 @@ std::vector<Setting> imageAndVoxels() {
              "1"),
         with(toggle({"shadow-focus", kImage, "on|off", "",
                      "with --clipmap, give each directional light a second shadow view over level 0's window "
-                     "around the camera (when that is under 0.7 of the scene's radius), so a large scene keeps "
+                     "around the camera (when that is smaller than the scene's bounding sphere), so a large scene keeps "
                      "fine shadows near the camera",
                      kAll, kNew},
                     FIELD(settings.shadowFocus)),

@@ -11,7 +11,8 @@ renders from that camera (the whole image, and its indirect term from the --aov 
 and prints the relative RMSE and mean-luminance ratio of each against the others, for the indirect
 term and for the whole image (../shared/tools/compare.py), with each run's voxel grid.
 
-usage: scripts/sponza-10x.py [BUILD_DIR] [SHARED_DIR] [OUT_DIR] [LEVELS]
+usage: scripts/sponza-10x.py [BUILD_DIR] [SHARED_DIR] [OUT_DIR] [LEVELS] [--validate]
+--validate: every render with the Khronos validation layer (the ctest sponza_10x passes it)
 """
 import json
 import os
@@ -21,10 +22,11 @@ import sys
 
 import OpenImageIO as oiio
 
-build = sys.argv[1] if len(sys.argv) > 1 else "build"
-shared = os.path.abspath(sys.argv[2] if len(sys.argv) > 2 else "../shared")
-out = sys.argv[3] if len(sys.argv) > 3 else "out/sponza-10x"
-levels = sys.argv[4] if len(sys.argv) > 4 else "4"
+args = [a for a in sys.argv[1:] if a != "--validate"]
+build = args[0] if len(args) > 0 else "build"
+shared = os.path.abspath(args[1] if len(args) > 1 else "../shared")
+out = args[2] if len(args) > 2 else "out/sponza-10x"
+levels = args[3] if len(args) > 3 else "4"
 os.makedirs(out, exist_ok=True)
 source_dir = os.path.join(shared, "scenes/crytek-sponza")
 source = os.path.join(source_dir, "sponza-sun.gltf")
@@ -61,6 +63,8 @@ with open(big, "w") as f:
 # The fitted 128^3 grid's voxel on one Sponza: its longest side plus 9 voxels of margin, over 128.
 voxel = "%.6f" % ((17.999 + 19.209) / (128 - 9))
 common = ["--width", "320", "--height", "180", "--voxels", "128", "--shadow-map", "4096"]
+if "--validate" in sys.argv:
+    common.append("--validate")
 runs = [
     ("one Sponza, fitted 128^3", "one-fitted", source, []),
     ("one Sponza, clipmap", "one-clipmap", source, ["--clipmap", levels, "--clipmap-voxel", voxel]),
