@@ -72,7 +72,7 @@ TEST(ShadowFocus, DirectionalLightGetsAViewAroundTheFocusFirst) {
         EXPECT_GT(c.z / c.w, 0.0f) << corner;
         EXPECT_LT(c.z / c.w, 1.0f) << corner;
     }
-    // A focus not much smaller than the scene gets no view of its own.
+    // A focus no smaller than the scene's bounding sphere gets no view of its own.
     const float sceneRadius = 0.5f * glm::length(bigBounds().max - bigBounds().min);
     EXPECT_EQ(render::shadowFocusRadius(bigBounds(), 4.0f), 4.0f);
     EXPECT_EQ(render::shadowFocusRadius(bigBounds(), 1.01f * render::kShadowFocusFraction * sceneRadius), 0.0f);
