@@ -7,17 +7,12 @@ along (-1, -1, -0.2), a camera 3 m above the ground looking straight down (image
 
     scripts/slab-scene.py OUT.gltf OFFSET        (also writes OUT.bin)
 """
-import json
 import math
-import os
-import struct
 import sys
 
+from quad_gltf import quat_x, write_quads
+
 VOXEL = 4.0 / 64
-
-
-def quat_x(angle):
-    return [math.sin(angle / 2), 0.0, 0.0, math.cos(angle / 2)]
 
 
 def quat_from_to(a, b):
@@ -42,41 +37,14 @@ def box_quads(lo, hi):
 def write_slab(path, offset):
     quads = box_quads([-1.9, -2 * VOXEL, -1.9], [1.9, 0.0, 1.9]) + \
         box_quads([offset * VOXEL, 0.0, -1.2], [(offset + 0.7) * VOXEL, 1.2, 1.2])
-    pos, nrm, idx = [], [], []
-    for corners, normal in quads:
-        base = len(pos) // 3
-        for c in corners:
-            pos += c
-            nrm += normal
-        idx += [base, base + 1, base + 2, base, base + 2, base + 3]
-    data = struct.pack("%df" % len(pos), *pos) + struct.pack("%df" % len(nrm), *nrm) + struct.pack("%dH" % len(idx), *idx)
-    n = len(pos) // 3
-    with open(path[:-5] + ".bin", "wb") as f:
-        f.write(data)
     d = [-1.0, -1.0, -0.2]
     length = math.sqrt(sum(x * x for x in d))
     sun = quat_from_to([0.0, 0.0, -1.0], [x / length for x in d])
-    gltf = {
-        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1, 2]}],
-        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 3.0, 0], "rotation": quat_x(-math.pi / 2)},
-                  {"rotation": sun, "extensions": {"KHR_lights_punctual": {"light": 0}}}],
-        "cameras": [{"type": "perspective",
-                     "perspective": {"yfov": math.radians(50), "aspectRatio": 1.0, "znear": 0.01, "zfar": 100}}],
-        "extensionsUsed": ["KHR_lights_punctual"],
-        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "directional", "intensity": 3.0}]}},
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0}]}],
-        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 0.8, 1], "metallicFactor": 0}}],
-        "buffers": [{"uri": os.path.basename(path[:-5]) + ".bin", "byteLength": len(data)}],
-        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": n * 12},
-                        {"buffer": 0, "byteOffset": n * 12, "byteLength": n * 12},
-                        {"buffer": 0, "byteOffset": n * 24, "byteLength": len(idx) * 2}],
-        "accessors": [{"bufferView": 0, "componentType": 5126, "count": n, "type": "VEC3",
-                       "min": [min(pos[i::3]) for i in range(3)], "max": [max(pos[i::3]) for i in range(3)]},
-                      {"bufferView": 1, "componentType": 5126, "count": n, "type": "VEC3"},
-                      {"bufferView": 2, "componentType": 5123, "count": len(idx), "type": "SCALAR"}],
-    }
-    with open(path, "w") as f:
-        json.dump(gltf, f)
+    nodes = [{"camera": 0, "translation": [0, 3.0, 0], "rotation": quat_x(-math.pi / 2)},
+             {"rotation": sun, "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+    cameras = [{"type": "perspective",
+                "perspective": {"yfov": math.radians(50), "aspectRatio": 1.0, "znear": 0.01, "zfar": 100}}]
+    write_quads(path, quads, [0.8, 0.8, 0.8], nodes, cameras, [{"type": "directional", "intensity": 3.0}])
 
 
 if __name__ == "__main__":

@@ -167,6 +167,25 @@ void addBand(Bands& b, const image::ImageRGBA32F& img, uint32_t x, uint32_t y, d
     ++b.count[bin];
 }
 
+// The ground's E/pi beside a wall 0.6 high on ground whose top face is at
+// `top`, seen by addTopDownCamera from 0.6 up: pixels binned by whole voxels
+// from x = lo on the -x side and from x = bandHi on the +x side, leaving out
+// where the wall (its far face at x = face) stands or hides the ground from
+// the camera (there the ray crosses the far face below the wall's top).
+Bands groundBands(const scene::Scene& s, const render::RenderSettings& rs, const image::ImageRGBA32F& img, float top,
+                  float v, float lo, float face, float bandHi) {
+    Bands b;
+    const float wallTop = top + 0.6f;
+    for (uint32_t y = 0; y < rs.height; ++y)
+        for (uint32_t x = 0; x < rs.width; ++x) {
+            const glm::vec3 p = pixelOnPlane(s, rs, x, y, top);
+            if (std::abs(p.z) > 0.4f) continue;
+            if (p.x >= lo && (p.x <= face || 0.6f - (0.6f - top) * face / p.x < wallTop)) continue;
+            addBand(b, img, x, y, p.x < lo ? (p.x - lo) / v : (p.x - bandHi) / v);
+        }
+    return b;
+}
+
 // The room above, seen from inside: the floor, away from the probe's shadow.
 // Inside, everything is leaked light; the band within a voxel of the walls
 // must not be brighter than the floor two to five voxels in.
@@ -212,18 +231,7 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
     addSun(s, glm::vec3(-1.0f, -1.0f, -0.2f));
     const render::RenderSettings rs = pixelSettings(n, 1);
     const image::ImageRGBA32F img = render(s, rs);
-    Bands b;
-    for (uint32_t y = 0; y < rs.height; ++y)
-        for (uint32_t x = 0; x < rs.width; ++x) {
-            const glm::vec3 p = pixelOnPlane(s, rs, x, y, top);
-            if (std::abs(p.z) > 0.4f) continue;
-            // Only the ground: not where the wall stands or hides it from
-            // the camera (above x = 0, the ray crosses the wall's far face
-            // below its top).
-            const float face = 0.9f * v, wallTop = top + 0.6f;
-            if (p.x >= 0.0f && (p.x <= face || 0.6f - (0.6f - top) * face / p.x < wallTop)) continue;
-            addBand(b, img, x, y, p.x < 0.0f ? p.x / v : p.x / v - 1.0f);
-        }
+    const Bands b = groundBands(s, rs, img, top, v, 0.0f, 0.9f * v, v);  // bands from the voxel layer's faces
     const double litNear = b.mean(1, 3), litFar = b.mean(4, 6), darkNear = b.mean(-3, -1), darkFar = b.mean(-6, -4);
     std::printf("  E/pi beside the sunlit side 1-3 voxels %.4f, 4-6 voxels %.4f (ratio %.2f, 0.64 before); "
                 "beside the shadowed side %.4f, %.4f (ratio %.2f, 2.31 before)\n",
@@ -312,17 +320,7 @@ TEST_F(ThinWallPixels, SlabAcrossTheLatticeIsMeasuredAndBounded) {
         addTopDownCamera(s, 0.6f, glm::radians(70.0f));
         addSun(s, glm::vec3(-1.0f, -1.0f, -0.2f));
         const render::RenderSettings rs = pixelSettings(n, 3);
-        const image::ImageRGBA32F img = render(s, rs);
-        Bands b;
-        for (uint32_t y = 0; y < rs.height; ++y)
-            for (uint32_t x = 0; x < rs.width; ++x) {
-                const glm::vec3 p = pixelOnPlane(s, rs, x, y, top);
-                if (std::abs(p.z) > 0.4f) continue;
-                // The ground only: not under the slab, nor where it hides the ground from the camera.
-                const float wallTop = top + 0.6f;
-                if (p.x >= x0 && (p.x <= x1 || 0.6f - (0.6f - top) * x1 / p.x < wallTop)) continue;
-                addBand(b, img, x, y, p.x < x0 ? (p.x - x0) / v : (p.x - x1) / v);
-            }
+        const Bands b = groundBands(s, rs, render(s, rs), top, v, x0, x1, x1);  // bands from the slab's faces
         const double values[3] = {b.mean(-3, -1), b.mean(-8, -4), b.mean(1, 3)};
         double* ranges[3] = {darkNear, darkFar, litNear};
         for (int k = 0; k < 3; ++k) {

@@ -1,0 +1,46 @@
+"""Small glTF scenes of flat quads for the CPU path tracer and dvsgi (scripts/corner-scene.py,
+scripts/slab-scene.py): one mesh, one Lambertian material, and the nodes, cameras and punctual lights
+the caller gives."""
+import json
+import math
+import os
+import struct
+
+
+def quat_x(angle):
+    return [math.sin(angle / 2), 0.0, 0.0, math.cos(angle / 2)]
+
+
+def write_quads(path, quads, albedo, nodes, cameras, lights):
+    """Writes PATH (.gltf) and its .bin: `quads` are (four corners, normal) pairs, drawn as node 0's
+    mesh; `nodes` (glTF node dicts) follow it in the scene."""
+    pos, nrm, idx = [], [], []
+    for corners, normal in quads:
+        base = len(pos) // 3
+        for c in corners:
+            pos += c
+            nrm += normal
+        idx += [base, base + 1, base + 2, base, base + 2, base + 3]
+    data = struct.pack("%df" % len(pos), *pos) + struct.pack("%df" % len(nrm), *nrm) + struct.pack("%dH" % len(idx), *idx)
+    n = len(pos) // 3
+    with open(path[:-5] + ".bin", "wb") as f:
+        f.write(data)
+    gltf = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": list(range(1 + len(nodes)))}],
+        "nodes": [{"mesh": 0}] + nodes,
+        "cameras": cameras,
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": lights}},
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": list(albedo) + [1], "metallicFactor": 0}}],
+        "buffers": [{"uri": os.path.basename(path[:-5]) + ".bin", "byteLength": len(data)}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": n * 12},
+                        {"buffer": 0, "byteOffset": n * 12, "byteLength": n * 12},
+                        {"buffer": 0, "byteOffset": n * 24, "byteLength": len(idx) * 2}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": n, "type": "VEC3",
+                       "min": [min(pos[i::3]) for i in range(3)], "max": [max(pos[i::3]) for i in range(3)]},
+                      {"bufferView": 1, "componentType": 5126, "count": n, "type": "VEC3"},
+                      {"bufferView": 2, "componentType": 5123, "count": len(idx), "type": "SCALAR"}],
+    }
+    with open(path, "w") as f:
+        json.dump(gltf, f)
