@@ -167,6 +167,19 @@ void addBand(Bands& b, const image::ImageRGBA32F& img, uint32_t x, uint32_t y, d
     ++b.count[bin];
 }
 
+// A wall 0.6 high and 1.2 wide between x = x0 and x1 standing on ground two
+// voxels thick whose top face is at `top`, seen from 0.6 above it, the sun
+// on the wall's +x side.
+scene::Scene wallOnGround(float v, float top, float x0, float x1) {
+    scene::Scene s;
+    const int grey = addMaterial(s, glm::vec3(0.8f));
+    addBox(s, grey, glm::vec3(0.95f, 2.0f * v, 0.95f), glm::vec3(0.0f, top - 2.0f * v, 0.0f), false);
+    addBox(s, grey, glm::vec3(0.5f * (x1 - x0), 0.3f, 0.6f), glm::vec3(0.5f * (x0 + x1), top + 0.3f, 0.0f), false);
+    addTopDownCamera(s, 0.6f, glm::radians(70.0f));
+    addSun(s, glm::vec3(-1.0f, -1.0f, -0.2f));
+    return s;
+}
+
 // The ground's E/pi beside a wall 0.6 high on ground whose top face is at
 // `top`, seen by addTopDownCamera from 0.6 up: pixels binned by whole voxels
 // from x = lo on the -x side and from x = bandHi on the +x side, leaving out
@@ -221,14 +234,9 @@ TEST_F(ThinWallPixels, RoomFloorShowsNoGlowAlongTheWalls) {
 TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
     constexpr uint32_t n = 64;
     const float v = 2.0f / float(n);
-    scene::Scene s;
-    const int grey = addMaterial(s, glm::vec3(0.8f));
     const float top = -0.5f + 2.0f * v;  // the ground's top face
-    addBox(s, grey, glm::vec3(0.95f, 2.0f * v, 0.95f), glm::vec3(0.0f, top - 2.0f * v, 0.0f), false);
     // Both faces of the wall in the voxel layer x in [0, v).
-    addBox(s, grey, glm::vec3(0.4f * v, 0.3f, 0.6f), glm::vec3(0.5f * v, top + 0.3f, 0.0f), false);
-    addTopDownCamera(s, 0.6f, glm::radians(70.0f));
-    addSun(s, glm::vec3(-1.0f, -1.0f, -0.2f));
+    const scene::Scene s = wallOnGround(v, top, 0.1f * v, 0.9f * v);
     const render::RenderSettings rs = pixelSettings(n, 1);
     const image::ImageRGBA32F img = render(s, rs);
     const Bands b = groundBands(s, rs, img, top, v, 0.0f, 0.9f * v, v);  // bands from the voxel layer's faces
@@ -313,12 +321,7 @@ TEST_F(ThinWallPixels, SlabAcrossTheLatticeIsMeasuredAndBounded) {
     for (int tenth = 0; tenth < 10; ++tenth) {
         const float offset = 0.05f + 0.1f * float(tenth);
         const float x0 = offset * v, x1 = (offset + 0.7f) * v;
-        scene::Scene s;
-        const int grey = addMaterial(s, glm::vec3(0.8f));
-        addBox(s, grey, glm::vec3(0.95f, 2.0f * v, 0.95f), glm::vec3(0.0f, top - 2.0f * v, 0.0f), false);
-        addBox(s, grey, glm::vec3(0.5f * (x1 - x0), 0.3f, 0.6f), glm::vec3(0.5f * (x0 + x1), top + 0.3f, 0.0f), false);
-        addTopDownCamera(s, 0.6f, glm::radians(70.0f));
-        addSun(s, glm::vec3(-1.0f, -1.0f, -0.2f));
+        const scene::Scene s = wallOnGround(v, top, x0, x1);
         const render::RenderSettings rs = pixelSettings(n, 3);
         const Bands b = groundBands(s, rs, render(s, rs), top, v, x0, x1, x1);  // bands from the slab's faces
         const double values[3] = {b.mean(-3, -1), b.mean(-8, -4), b.mean(1, 3)};
