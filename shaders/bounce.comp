@@ -141,7 +141,7 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
     } else {
         shown = vec3(0.0);
     }
-    return vec4(shown, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY);
+    return vec4(shown, twoSidedOpacity(code));
 }
 
 void main() {

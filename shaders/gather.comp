@@ -10,6 +10,7 @@
 // cones. Runs at the trace resolution (--trace-scale); the G-buffer is read at
 // the pixel each trace pixel stands for.
 #define CONE_USE_RADIANCE_VOLUME
+#define CONE_NEAR_SIDES  // near samples read every voxel for thin walls and show the side facing them
 layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;
 
 #ifdef DVSGI_CLIPMAP

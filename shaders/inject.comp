@@ -9,7 +9,7 @@
 // radiance rho/pi * E * attenuation * visibility for every light, plus the
 // voxel's emitted radiance. Writes it to the voxel's slot of the direct light
 // (kept for the bounces; alpha 1 + its side code) and to the radiance volume,
-// alpha = opacity (1 for occupied voxels, TWO_SIDED_OPACITY for those with
+// alpha = opacity (1 for occupied voxels, twoSidedOpacity(code) for those with
 // another side code). A two-sided voxel
 // (lib/voxel_sides.glsl) is also lit side by side into its side light, and
 // its radiance texel shows its darker side (black if it is two-sided along
@@ -102,7 +102,7 @@ void main() {
     }
     imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, sideCodeAlpha(code)));
     vec3 shown = code == SIDE_ONE ? radiance : (axis >= 0 ? min(side[0], side[1]) : vec3(0.0));
-    imageStore(outRadiance, v, vec4(shown, code == SIDE_ONE ? 1.0 : TWO_SIDED_OPACITY));
+    imageStore(outRadiance, v, vec4(shown, twoSidedOpacity(code)));
     if (axis < 0) return;
     // The reflected light stays for a feedback frame's bounce to blend with;
     // otherwise the bounces start from none.

@@ -33,12 +33,14 @@ vec4 directionalAt(int l, vec3 uvw, float lod) {
 }
 #ifdef CONE_USE_RADIANCE_VOLUME
 vec4 radianceAt(int l, vec3 uvw) { return atlasSample(radianceAtlas, l, uvw, float(traceGrid(l).dims.x), 0.0); }
+// Level l's voxel c (of n per edge, inside the level), unfiltered.
+vec4 radianceVoxel(int l, ivec3 c, int n) { return texelFetch(radianceAtlas, ivec3(c.xy, l * n + c.z), 0); }
 // The opacity of level l's voxel that holds uvw, unfiltered (0 outside the level).
 float radianceOpacityAt(int l, vec3 uvw, float size) {
     ivec3 c = ivec3(floor(uvw * size));
     int n = int(size);
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(n)))) return 0.0;
-    return texelFetch(radianceAtlas, ivec3(c.xy, l * n + c.z), 0).a;
+    return radianceVoxel(l, c, n).a;
 }
 #endif
 #else
@@ -47,9 +49,12 @@ VoxelGrid traceGrid(int l) { return grid; }
 vec4 directionalAt(int l, vec3 uvw, float lod) { return textureLod(directional, uvw, lod); }
 #ifdef CONE_USE_RADIANCE_VOLUME
 vec4 radianceAt(int l, vec3 uvw) { return textureLod(radianceVolume, uvw, 0.0); }
+// Voxel c (of n per edge, inside the grid), unfiltered.
+vec4 radianceVoxel(int l, ivec3 c, int n) { return texelFetch(radianceVolume, c, 0); }
 // The opacity of the voxel that holds uvw, unfiltered.
 float radianceOpacityAt(int l, vec3 uvw, float size) {
-    return texelFetch(radianceVolume, clamp(ivec3(floor(uvw * size)), ivec3(0), ivec3(int(size) - 1)), 0).a;
+    int n = int(size);
+    return radianceVoxel(l, clamp(ivec3(floor(uvw * size)), ivec3(0), ivec3(n - 1)), n).a;
 }
 #endif
 #endif
@@ -137,29 +142,95 @@ void tapDirectional(int l, uint face, int axis, vec3 uvw, float lod, float w, in
 // travels most (trilinear opacity across a one-voxel surface is a tent whose
 // step-corrected transmittance is about 0.1, so narrow shadow cones saw
 // through single-layer occluders: umbra 0.10 instead of 0), blended toward
-// the directional sample `directional` as the footprint grows. Where either
-// of the two voxels read along the axis is two-sided (lib/voxel_sides.glsl),
+// the directional sample `directional` as the footprint grows.
+// Where any voxel the sample would read is two-sided (lib/voxel_sides.glsl),
 // the directional sample alone: its level 0 shows a thin wall's sides by the
 // way the cone travels, where the radiance volume's one value per voxel
-// cannot (it holds the darker side, so that its neighbours' trilinear
-// interpolation shows no sunlit side through a wall either); its opacity is
-// then taken per the footprint's depth, as the caller's step correction assumes.
-vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
+// cannot (it holds the darker side). All eight voxels count, not only the two
+// on the sample's own line along the axis: a sample beside a thin wall's voxel
+// mixed its darker side in across the axis, so the ground beside a sunlit thin
+// wall saw it dark (docs/quality.md, "A slab across the lattice"). The eight
+// are fetched one by one and mixed here (on llvmpipe the gather 4 % dearer than
+// two trilinear reads and two marks). And a sample near one thin wall,
+// travelling toward it, shows the side facing it: the directional volume of
+// the wall's axis alone, where the dir^2-weighted sample mixed in the black
+// edge the other two volumes show (3 % more). Only where the radiance counts
+// (CONE_NEAR_SIDES, the gather): the lighting pass's cones use the opacity
+// alone and keep the cheaper sample below.
+#ifdef CONE_NEAR_SIDES
+vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, vec4 taps[4], float level) {
+    vec3 a = abs(dir);
+    int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    int n = int(traceGrid(l).dims.x);
+    vec3 q = uvw * float(n) - 0.5;
+    ivec3 c = ivec3(floor(q));
+    vec3 fr = q - vec3(c);
+    // Voxels outside the grid are empty, as the sampler's border: fetched
+    // clamped and weighted 0, with no branch per voxel.
+    ivec3 lo = clamp(c, ivec3(0), ivec3(n - 1)), hi = clamp(c + 1, ivec3(0), ivec3(n - 1));
+    vec3 in0 = vec3(equal(lo, c)), in1 = vec3(equal(hi, c + 1));
+    vec4 cell[2];
+    // The marks' range (1 - opacity of marked voxels) and the last marked
+    // voxel, kept with selects and decoded once below.
+    float markLo = 1.0, markHi = 0.0;
+    vec3 wallVoxel = vec3(0.0);
+    for (int k = 0; k < 2; ++k) {
+        vec4 v[4];
+        for (int i = 0; i < 4; ++i) {
+            ivec3 p = lo;
+            p[axis] = k == 0 ? lo[axis] : hi[axis];
+            p[u] = (i & 1) == 0 ? lo[u] : hi[u];
+            p[w] = (i >> 1) == 0 ? lo[w] : hi[w];
+            float inside = (k == 0 ? in0[axis] : in1[axis]) * ((i & 1) == 0 ? in0[u] : in1[u]) *
+                           ((i >> 1) == 0 ? in0[w] : in1[w]);
+            v[i] = inside * radianceVoxel(l, p, n);
+            bool marked = marksTwoSided(v[i].a);
+            markHi = marked ? max(markHi, 1.0 - v[i].a) : markHi;
+            markLo = marked ? min(markLo, 1.0 - v[i].a) : markLo;
+            wallVoxel = marked ? vec3(p) : wallVoxel;
+        }
+        cell[k] = mix(mix(v[0], v[1], fr[u]), mix(v[2], v[3], fr[u]), fr[w]);
+    }
+    if (markHi > 0.0) {
+        vec4 depth = taps[3];  // the directional sample's (tau L, tau)
+        // One wall's voxels, all two-sided along one axis: show the side facing
+        // the sample (a ray from there that reaches the wall meets that side).
+        int wallAxis = markLo == markHi ? twoSidedAxis(sideCodeOfOpacity(1.0 - markHi)) : -1;
+        // Selected by mask, not by index: indexed by wallAxis, this branch cost
+        // the gather about twice as much on llvmpipe.
+        vec3 onAxis = vec3(equal(ivec3(0, 1, 2), ivec3(wallAxis)));
+        float side = dot(onAxis, q - wallVoxel);
+        // The directional sample's own tap of that axis, at full weight:
+        // the volume for rays travelling toward the wall from this side.
+        if (dot(onAxis, dir) * side < 0.0) depth = onAxis.x * taps[0] + onAxis.y * taps[1] + onAxis.z * taps[2];
+        // Level 0's cells are two voxels deep and the caller corrects the
+        // opacity for a slab as deep as the footprint (2^level voxels): take
+        // the cells' optical depth per that depth, or it would count twice.
+        return premultiplied(depth * exp2(max(level, 0.0) - 1.0));
+    }
+    // The depth ramp of cellsAlongAxis between the two cells' centres.
+    float f = clamp((fr[axis] - 0.5) / DEPTH_RAMP + 0.5, 0.0, 1.0);
+    vec4 acc = vec4(0.0);
+    addOpticalDepth(cell[0], cell[1], f, 1.0, acc);
+    return mix(premultiplied(acc), directional, max(level, 0.0));
+}
+#else
+// For opacity alone: the two cells read by the hardware's filter, and the two
+// voxels on the sample's line checked for the mark.
+vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, vec4 taps[4], float level) {
     vec3 a = abs(dir);
     int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
     float size = float(traceGrid(l).dims.x);
     vec3 p0, p1;
     float f = cellsAlongAxis(uvw, axis, size, p0, p1);
-    if (marksTwoSided(radianceOpacityAt(l, p0, size)) || marksTwoSided(radianceOpacityAt(l, p1, size))) {
-        // Level 0's cells are two voxels deep and the caller corrects the
-        // opacity for a slab as deep as the footprint (2^level voxels): take
-        // the cells' optical depth per that depth, or it would count twice.
-        return forDepthRatio(directional, exp2(max(level, 0.0) - 1.0));
-    }
+    if (marksTwoSided(radianceOpacityAt(l, p0, size)) || marksTwoSided(radianceOpacityAt(l, p1, size)))
+        return premultiplied(taps[3] * exp2(max(level, 0.0) - 1.0));  // per the footprint's depth, as above
     vec4 acc = vec4(0.0);
     addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);
     return mix(premultiplied(acc), directional, max(level, 0.0));
 }
+#endif
 #endif
 
 // The three volumes facing `dir` at one whole level: their weighted optical
@@ -168,13 +239,18 @@ vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, float level) {
 // index into the atlas (the -axis volume, or the next one for dir >= 0), so
 // only the three facing volumes are fetched, with no branch (llvmpipe runs
 // divergent branches both ways).
-vec4 sampleFacing(int l, vec3 uvw, vec3 dir, vec3 w, float lod) {
-    vec4 acc = vec4(0.0);
+// `taps` receives each volume's (tau L, tau) unweighted, and their weighted sum.
+vec4 sampleFacing(int l, vec3 uvw, vec3 dir, vec3 w, float lod, out vec4 taps[4]) {
     uvec3 face = uvec3(0u, 2u, 4u) + uvec3(greaterThanEqual(dir, vec3(0.0)));
-    tapDirectional(l, face.x, 0, uvw, lod, w.x, acc);
-    tapDirectional(l, face.y, 1, uvw, lod, w.y, acc);
-    tapDirectional(l, face.z, 2, uvw, lod, w.z, acc);
-    return premultiplied(acc);
+    vec4 tx = vec4(0.0), ty = vec4(0.0), tz = vec4(0.0);
+    tapDirectional(l, face.x, 0, uvw, lod, 1.0, tx);
+    tapDirectional(l, face.y, 1, uvw, lod, 1.0, ty);
+    tapDirectional(l, face.z, 2, uvw, lod, 1.0, tz);
+    taps[0] = tx;
+    taps[1] = ty;
+    taps[2] = tz;
+    taps[3] = w.x * tx + w.y * ty + w.z * tz;
+    return premultiplied(taps[3]);
 }
 
 // Directional sample for a cone marching along unit `dir` at mip `level`: the
@@ -190,12 +266,15 @@ vec4 sampleFacing(int l, vec3 uvw, vec3 dir, vec3 w, float lod) {
 // sharp as a glossy one); without, the level is rounded, at half the cost: a
 // diffuse cone's level depends only on its distance, so rounding changes no
 // pixel against its neighbours (blending cost the voxel bounce 3x on lavapipe).
-vec4 sampleDirectional(int l, vec3 uvw, vec3 dir, float level, bool blendLevels) {
+// `taps`: the three volumes' (tau L, tau) at the (lower) level, unweighted, and
+// their weighted sum (sampleFacing).
+vec4 sampleDirectional(int l, vec3 uvw, vec3 dir, float level, bool blendLevels, out vec4 taps[4]) {
     vec3 w = dir * dir;
-    if (!blendLevels) return sampleFacing(l, uvw, dir, w, floor(level + 0.5));
+    if (!blendLevels) return sampleFacing(l, uvw, dir, w, floor(level + 0.5), taps);
     float lod = floor(level), fr = level - lod;
-    vec4 s = sampleFacing(l, uvw, dir, w, lod);
-    return fr > 0.0 ? mix(s, sampleFacing(l, uvw, dir, w, lod + 1.0), fr) : s;
+    vec4 s = sampleFacing(l, uvw, dir, w, lod, taps);
+    vec4 upper[4];
+    return fr > 0.0 ? mix(s, sampleFacing(l, uvw, dir, w, lod + 1.0, upper), fr) : s;
 }
 
 #ifdef DVSGI_CLIPMAP
@@ -257,9 +336,10 @@ vec4 sampleLevel(int l, vec3 p, vec3 dir, float d, bool blendLevels) {
     VoxelGrid g = traceGrid(l);
     float level = log2(d / g.originSize.w);
     vec3 uvw = (p - g.originSize.xyz) / (g.originSize.w * float(g.dims.x));
-    vec4 smp = sampleDirectional(l, uvw, dir, clamp(level - 1.0, 0.0, float(g.dims.z) - 1.0), blendLevels);
+    vec4 taps[4];
+    vec4 smp = sampleDirectional(l, uvw, dir, clamp(level - 1.0, 0.0, float(g.dims.z) - 1.0), blendLevels, taps);
 #ifdef CONE_USE_RADIANCE_VOLUME
-    if (level < 1.0) smp = sampleNear(l, uvw, dir, smp, level);
+    if (level < 1.0) smp = sampleNear(l, uvw, dir, smp, taps, level);
 #endif
     return smp;
 }
@@ -323,9 +403,10 @@ vec4 traceConeAO(vec3 origin, vec3 n, float originHeight, vec3 dir, float tanHal
         // cornell-lights converged 22 % too bright; docs/quality.md.)
         if (any(lessThan(uvw, vec3(0.0))) || any(greaterThan(uvw, vec3(1.0)))) break;
         // Directional level 0 voxels are two voxels wide.
-        vec4 smp = sampleDirectional(0, uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels);
+        vec4 taps[4];
+        vec4 smp = sampleDirectional(0, uvw, dir, clamp(level - 1.0, 0.0, maxLevel), blendLevels, taps);
 #ifdef CONE_USE_RADIANCE_VOLUME
-        if (level < 1.0) smp = sampleNear(0, uvw, dir, smp, level);
+        if (level < 1.0) smp = sampleNear(0, uvw, dir, smp, taps, level);
 #endif
 #endif
         // Steps follow the cone's diameter but never exceed the sampled cell,

@@ -25,7 +25,7 @@ DVSGI_CONST(uint, BIND_INJECT_SHADOW_MAP, 4);
 DVSGI_CONST(uint, BIND_INJECT_DIRECT, 5);  // per-slot direct light + emission (kept for the bounces)
 DVSGI_CONST(uint, BIND_INJECT_LIST, 6);  // occupied-voxel list: one invocation per entry (= slot)
 DVSGI_CONST(uint, BIND_INJECT_INDEX, 7);  // slot index volume: occupancy for voxel shadow rays
-DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1 (TWO_SIDED_OPACITY: two-sided)
+DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1 (1 - side code * TWO_SIDED_OPACITY_STEP: two-sided)
 DVSGI_CONST(uint, BIND_INJECT_SIDES, 9);  // per-slot side light of two-sided voxels (lib/voxel_sides.glsl)
 
 DVSGI_END

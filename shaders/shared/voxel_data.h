@@ -45,12 +45,14 @@ DVSGI_CONST(float, TWO_SIDED_MIN_WEIGHT, 0.1);
 DVSGI_CONST(uint, SIDE_ONE, 0);      // one-sided: the same radiance every way
 // 1-3: two-sided along axis code - 1
 DVSGI_CONST(uint, SIDE_SEVERAL, 4);  // two-sided along several axes: an edge or corner where thin walls meet
-// The radiance volume's opacity of a voxel with any side code but SIDE_ONE:
-// fp16's largest value below 1 (1 - 2^-11), so that the filter looks up the
-// side light of these voxels only. Cones sampling the radiance volume let
-// through under 5e-4 of a voxel instead of 1e-4 (the tracer caps opacity at
-// 0.9999): nothing an image shows.
-DVSGI_CONST(float, TWO_SIDED_OPACITY, 0.99951171875);
+// The radiance volume's opacity of a voxel with side code c other than
+// SIDE_ONE: 1 - c * 2^-11, fp16 values just below 1, so that the filter looks
+// up the side light of these voxels only and the per-pixel cones tell a thin
+// wall's axis (lib/voxel_sides.glsl, twoSidedOpacity). Cones sampling the
+// radiance volume let through under 2e-3 of such a voxel instead of 1e-4
+// (the tracer caps opacity at 0.9999), and the near samples read the
+// directional volumes there instead.
+DVSGI_CONST(float, TWO_SIDED_OPACITY_STEP, 0.00048828125);
 
 // Slots per row of the per-slot images (attributes, voxel direct light);
 // capacities are whole rows.

@@ -479,7 +479,7 @@ TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
                     if (dir == 0) {
                         ++counts[code];
                         // The radiance's opacity marks the voxels the filter looks up.
-                        EXPECT_EQ(t.a, code == sh::SIDE_ONE ? 1.0f : sh::TWO_SIDED_OPACITY);
+                        EXPECT_EQ(t.a, 1.0f - float(code) * sh::TWO_SIDED_OPACITY_STEP);
                     }
                     if (code == sh::SIDE_ONE) continue;
                     t = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);

@@ -228,9 +228,10 @@ TEST_F(ThinWallPixels, RoomFloorShowsNoGlowAlongTheWalls) {
 }
 
 // A thin wall standing on thick ground, the sun on its +x side: beside the
-// sunlit side the ground gets the wall's light (no dark band), beside the
-// shadowed side less light through it than before (1.29x the ground further
-// away, 2.31x before; what is left comes through the two-voxel cells).
+// sunlit side the ground gets the wall's light (no dark band; nearer the wall,
+// more of it), beside the shadowed side less light through it than before
+// (1.09x the ground further away, 2.31x before the two-sided voxels' near
+// samples, 1.29x while they checked only the voxels on the sample's own line).
 TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
     constexpr uint32_t n = 64;
     const float v = 2.0f / float(n);
@@ -246,8 +247,8 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
                 litNear, litFar, litNear / litFar, darkNear, darkFar, darkNear / darkFar);
     ASSERT_GT(litFar, 0.0);
     ASSERT_GT(darkFar, 0.0);
-    EXPECT_GT(litNear / litFar, 0.9);    // measured 1.02: nearer the wall sees more of it
-    EXPECT_LT(darkNear / darkFar, 1.5);  // measured 1.29
+    EXPECT_GT(litNear / litFar, 1.08);   // measured 1.17 (1.02 before the side facing each sample)
+    EXPECT_LT(darkNear / darkFar, 1.2);  // measured 1.09 (1.29 before)
 }
 
 // The voxel debug view (--view voxels:radiance) of a thin wall lit by the sun
@@ -340,10 +341,12 @@ TEST_F(ThinWallPixels, SlabAcrossTheLatticeIsMeasuredAndBounded) {
     std::printf("  largest over smallest across the offsets: shadowed side 1-3 voxels %.2f, 4-8 voxels %.2f; sunlit "
                 "side 1-3 voxels %.2f (the goal is 1)\n",
                 spreadDarkNear, spreadDarkFar, spreadLitNear);
-    // Measured on lavapipe, 2026-12-05: 3.91, 1.51, 1.61.
-    EXPECT_LT(spreadDarkNear, 4.5);
-    EXPECT_LT(spreadDarkFar, 1.75);
-    EXPECT_LT(spreadLitNear, 1.85);
+    // Measured on lavapipe, 2026-12-05: 4.21, 1.43, 1.39 (3.91, 1.51, 1.61 before near
+    // samples checked all eight voxels they read and showed a thin wall the side facing them:
+    // the one-layer slab's shadowed side got darker, its sunlit side brighter).
+    EXPECT_LT(spreadDarkNear, 4.6);
+    EXPECT_LT(spreadDarkFar, 1.6);
+    EXPECT_LT(spreadLitNear, 1.55);
 }
 
 }  // namespace
