@@ -247,7 +247,7 @@ TEST_F(ThinWallPixels, BesideAWallSeeTheSideFacingThem) {
                 litNear, litFar, litNear / litFar, darkNear, darkFar, darkNear / darkFar);
     ASSERT_GT(litFar, 0.0);
     ASSERT_GT(darkFar, 0.0);
-    EXPECT_GT(litNear / litFar, 1.08);   // measured 1.17 (1.02 before the side facing each sample)
+    EXPECT_GT(litNear / litFar, 1.12);   // measured 1.17 (1.08 with the eight voxels checked alone, 1.02 before)
     EXPECT_LT(darkNear / darkFar, 1.2);  // measured 1.09 (1.29 before)
 }
 
