@@ -157,10 +157,30 @@ void tapDirectional(int l, uint face, int axis, vec3 uvw, float lod, float w, in
 // edge the other two volumes show (3 % more). Only where the radiance counts
 // (CONE_NEAR_SIDES, the gather): the lighting pass's cones use the opacity
 // alone and keep the cheaper sample below.
+// The axis a cone travelling along `dir` travels most.
+int majorAxis(vec3 dir) {
+    vec3 a = abs(dir);
+    return a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+}
+
+// A near sample beside a two-sided voxel, from the directional (tau L, tau)
+// `depth` of level 0: its cells are two voxels deep and the caller corrects
+// the opacity for a slab as deep as the footprint (2^level voxels), so the
+// depth is taken per that depth, or it would count twice.
+vec4 nearFromDirectional(vec4 depth, float level) { return premultiplied(depth * exp2(max(level, 0.0) - 1.0)); }
+
+// A near sample from the radiance volume's two cells along the travel axis
+// (optical depth ramped by f between them), blended toward the directional
+// sample as the footprint grows to two voxels.
+vec4 nearFromCells(vec4 c0, vec4 c1, float f, vec4 directional, float level) {
+    vec4 acc = vec4(0.0);
+    addOpticalDepth(c0, c1, f, 1.0, acc);
+    return mix(premultiplied(acc), directional, max(level, 0.0));
+}
+
 #ifdef CONE_NEAR_SIDES
 vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, vec4 taps[4], float level) {
-    vec3 a = abs(dir);
-    int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+    int axis = majorAxis(dir);
     int u = (axis + 1) % 3, w = (axis + 2) % 3;
     int n = int(traceGrid(l).dims.x);
     vec3 q = uvw * float(n) - 0.5;
@@ -204,31 +224,21 @@ vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, vec4 taps[4], float
         // The directional sample's own tap of that axis, at full weight:
         // the volume for rays travelling toward the wall from this side.
         if (dot(onAxis, dir) * side < 0.0) depth = onAxis.x * taps[0] + onAxis.y * taps[1] + onAxis.z * taps[2];
-        // Level 0's cells are two voxels deep and the caller corrects the
-        // opacity for a slab as deep as the footprint (2^level voxels): take
-        // the cells' optical depth per that depth, or it would count twice.
-        return premultiplied(depth * exp2(max(level, 0.0) - 1.0));
+        return nearFromDirectional(depth, level);
     }
     // The depth ramp of cellsAlongAxis between the two cells' centres.
-    float f = clamp((fr[axis] - 0.5) / DEPTH_RAMP + 0.5, 0.0, 1.0);
-    vec4 acc = vec4(0.0);
-    addOpticalDepth(cell[0], cell[1], f, 1.0, acc);
-    return mix(premultiplied(acc), directional, max(level, 0.0));
+    return nearFromCells(cell[0], cell[1], clamp((fr[axis] - 0.5) / DEPTH_RAMP + 0.5, 0.0, 1.0), directional, level);
 }
 #else
 // For opacity alone: the two cells read by the hardware's filter, and the two
 // voxels on the sample's line checked for the mark.
 vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, vec4 taps[4], float level) {
-    vec3 a = abs(dir);
-    int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
     float size = float(traceGrid(l).dims.x);
     vec3 p0, p1;
-    float f = cellsAlongAxis(uvw, axis, size, p0, p1);
+    float f = cellsAlongAxis(uvw, majorAxis(dir), size, p0, p1);
     if (marksTwoSided(radianceOpacityAt(l, p0, size)) || marksTwoSided(radianceOpacityAt(l, p1, size)))
-        return premultiplied(taps[3] * exp2(max(level, 0.0) - 1.0));  // per the footprint's depth, as above
-    vec4 acc = vec4(0.0);
-    addOpticalDepth(radianceAt(l, p0), radianceAt(l, p1), f, 1.0, acc);
-    return mix(premultiplied(acc), directional, max(level, 0.0));
+        return nearFromDirectional(taps[3], level);
+    return nearFromCells(radianceAt(l, p0), radianceAt(l, p1), f, directional, level);
 }
 #endif
 #endif
@@ -242,14 +252,11 @@ vec4 sampleNear(int l, vec3 uvw, vec3 dir, vec4 directional, vec4 taps[4], float
 // `taps` receives each volume's (tau L, tau) unweighted, and their weighted sum.
 vec4 sampleFacing(int l, vec3 uvw, vec3 dir, vec3 w, float lod, out vec4 taps[4]) {
     uvec3 face = uvec3(0u, 2u, 4u) + uvec3(greaterThanEqual(dir, vec3(0.0)));
-    vec4 tx = vec4(0.0), ty = vec4(0.0), tz = vec4(0.0);
-    tapDirectional(l, face.x, 0, uvw, lod, 1.0, tx);
-    tapDirectional(l, face.y, 1, uvw, lod, 1.0, ty);
-    tapDirectional(l, face.z, 2, uvw, lod, 1.0, tz);
-    taps[0] = tx;
-    taps[1] = ty;
-    taps[2] = tz;
-    taps[3] = w.x * tx + w.y * ty + w.z * tz;
+    taps[0] = taps[1] = taps[2] = vec4(0.0);
+    tapDirectional(l, face.x, 0, uvw, lod, 1.0, taps[0]);
+    tapDirectional(l, face.y, 1, uvw, lod, 1.0, taps[1]);
+    tapDirectional(l, face.z, 2, uvw, lod, 1.0, taps[2]);
+    taps[3] = w.x * taps[0] + w.y * taps[1] + w.z * taps[2];
     return premultiplied(taps[3]);
 }
 

@@ -309,8 +309,8 @@ TEST_F(ThinWallPixels, VoxelViewShowsTheSideFacingTheCamera) {
 // the lattice falls, and today it does: next to the shadowed side the two
 // layers let 2-4x the light through, next to the sunlit side they show 1.5x
 // it (against a traced reference, scripts/slab-compare.py, two layers are
-// right beside the sunlit side and one layer 43 % too dark; both leak to the
-// shadowed side). Sponza's outer walls are such slabs at 128^3, and its indirect light
+// right beside the sunlit side and one layer 30 % too dark, 43 % before the
+// near samples showed the side facing them; both leak to the shadowed side). Sponza's outer walls are such slabs at 128^3, and its indirect light
 // moves by up to 18 % with the lattice (docs/quality.md, "Sponza's indirect
 // light and where the lattice falls"). This measures the spread and guards it
 // against getting worse; the goal is no spread.
