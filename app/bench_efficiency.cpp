@@ -72,6 +72,7 @@ void modelTraffic(const gpu::Context& ctx, const render::Renderer& renderer, con
     in.staticGeometryBytes = geometry.staticBytes;
     in.dynamicGeometryBytes = geometry.dynamicBytes;
     in.bounces = bounces;
+    in.bounceRays = s.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && s.clipmap.levels == 0;
     if (const vxgi::VoxelVolumes* volumes = renderer.volumes()) {
         const auto start = std::chrono::steady_clock::now();
         const vxgi::VoxelCounts counts = vxgi::countVoxels(ctx, *volumes);
@@ -123,7 +124,8 @@ void addTrafficJson(const Measurement& m, double copyGbps, nlohmann::json& json)
                            {"dynamic_geometry_bytes", in.dynamicGeometryBytes},
                            {"slots", in.slots},
                            {"temporal", in.temporal},
-                           {"bounces", in.bounces}};
+                           {"bounces", in.bounces},
+                           {"bounce_rays", in.bounceRays}};
     // The whole frame: the modelled bytes of its passes over its time.
     const uint64_t bytes = frameBytes(m);
     const double gbps = bench::gigabytesPerSecond(bytes, summarize(m.frameMs).median);

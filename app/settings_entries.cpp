@@ -349,6 +349,21 @@ std::vector<Setting> imageAndVoxels() {
                      "step factor beta of the voxel bounce's cones (the pixels' cones use --cone-step)", kAll, kFrame},
                     0.05, 4, FIELD(settings.voxelLight.bounceStepFactor)),
              "0.5", "a step factor beta in 0.05..4"),
+        with(choice({"bounce-trace", kVoxelLight, "cones|rays", "",
+                     "how the voxel bounce gathers each voxel's light: cones = the paper's six cones through the "
+                     "filtered directional volumes; rays = --bounce-rays rays per voxel marched voxel by voxel "
+                     "through the radiance volume, so no wall lets light through and a closed room keeps all "
+                     "of it (a fitted grid's; --clipmap levels always trace cones)",
+                     kAll, kFrame},
+                    {{"cones", vxgi::BounceTrace::Cones}, {"rays", vxgi::BounceTrace::Rays}},
+                    FIELD(settings.voxelLight.bounceTrace)),
+             "rays", "cones or rays"),
+        with(integer({"bounce-rays", kVoxelLight, "R", "",
+                      "--bounce-trace rays: rays per voxel over its cosine-weighted hemisphere, the same every "
+                      "bounce and frame (a two-sided voxel's other side gets R/4, at least 4)",
+                      kAll, kFrame},
+                     1, 1024, FIELD(settings.voxelLight.bounceRays)),
+             "32"),
         with(number({"voxel-temporal-alpha", kVoxelLight, "A", "",
                      "feedback frames (--frames, dvsgi view): the light each voxel reflects moves only a fraction A "
                      "of the way from what it reflected last frame, smoothing the indirect light around a moving "

@@ -33,6 +33,12 @@ layout(set = 0, binding = BIND_BOUNCE_STATS, std430) writeonly buffer Stats { fl
 layout(set = 0, binding = BIND_BOUNCE_HISTORY, rgba32ui) uniform uimage3D history;
 layout(set = 0, binding = BIND_BOUNCE_SIDES, rgba32ui) uniform uimage3D sides;
 VOXEL_LIST_BLOCK(BIND_BOUNCE_LIST, readonly);
+#if defined(DVSGI_RAY_TRACE) || defined(DVSGI_TRACED)
+layout(set = 0, binding = BIND_BOUNCE_TRACED, rgba32ui) uniform uimage3D traced;
+#endif
+#ifdef DVSGI_RAY_TRACE
+VOXEL_INDEX_BLOCK(BIND_BOUNCE_INDEX, readonly);
+#endif
 layout(push_constant) uniform Push { BouncePush pc; };
 
 #include "lib/math.glsl"
@@ -41,6 +47,10 @@ layout(push_constant) uniform Push { BouncePush pc; };
 #include "lib/voxel_window.glsl"
 #include "lib/cone_trace.glsl"
 #include "lib/voxel_list_dispatch.glsl"
+#ifdef DVSGI_RAY_TRACE
+#include "lib/voxel_index.glsl"
+#include "lib/voxel_rays.glsl"
+#endif
 
 const uint GROUP_SIZE = VOXEL_LIST_GROUP;
 shared vec2 partial[GROUP_SIZE];
@@ -74,13 +84,9 @@ vec3 blendWithHistory(ivec3 v, uint slot, vec3 value, float sideTag, out bool si
     return value;
 }
 
-// `sideChange`: for a two-sided voxel, the convergence statistics of both
-// sides (summed |luminance change| of direct + reflected, and the luminance
-// after), since its radiance texel shows only the darker one; x < 0 otherwise.
-vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
-    sideChange = vec2(-1.0);
-    vec4 d = imageLoad(direct, slotTexel(slot, 0u));
-    uint code = sideCodeOf(d);
+// The normal the voxel's bounce gathers about: for a two-sided voxel the side
+// its weights favour (`strong` 1: -axis), whose six cones gather there.
+vec3 bounceNormal(uint slot, uint code, out int axis, out int strong) {
     vec3 pos, neg;
     voxelNormalWeights(slot, pos, neg);
     vec3 n = voxelNormal(slot);
@@ -90,19 +96,60 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
         n = vec3(0.0);
         n[a] = pos[a] >= neg[a] ? 1.0 : -1.0;
     }
-    bool twoSided = twoSidedAxis(code) >= 0;
-    int axis = max(twoSidedAxis(code), 0);
-    // A two-sided voxel's six cones gather for the side its weights favour.
-    int strong = twoSided && pos[axis] < neg[axis] ? 1 : 0;
-    if (twoSided) {
+    axis = twoSidedAxis(code);
+    int a = max(axis, 0);
+    strong = axis >= 0 && pos[a] < neg[a] ? 1 : 0;
+    if (axis >= 0) {
         n = vec3(0.0);
-        n[axis] = strong == 0 ? 1.0 : -1.0;
+        n[a] = strong == 0 ? 1.0 : -1.0;
     }
+    return n;
+}
+
+#ifdef DVSGI_RAY_TRACE
+#ifndef RAY_OFFSET
+#define RAY_OFFSET 1.0
+#endif
+void main() {
+    uint entry = listInvocation();
+    if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
+    ivec3 v = listVoxel(list.entries[entry]);
+    uint code = sideCodeOf(imageLoad(direct, slotTexel(entry, 0u)));
+    int axis, strong;
+    vec3 n = bounceNormal(entry, code, axis, strong);
+    vec3 albedo = voxelAlbedo(entry);
+    // The same rays every bounce and frame: a static scene converges to one
+    // light, with no noise from frame to frame.
+    uint seed = hashU(uint(v.x) | uint(v.y) << 10 | uint(v.z) << 20);
+    vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed);
+    vec3 other = axis >= 0 ? albedo * voxelRaysCosine(v, -n, RAY_OFFSET, max(pc.flags.w / 4u, 4u), hashU(seed)) : vec3(0.0);
+    // Half floats: in RGB9E5 a bounce's increment fell under the step in a
+    // bright closed room and the series stalled 1 % short.
+    imageStore(traced, slotTexel(entry, 0u), uvec4(packHalf2x16(reflected.rg), packHalf2x16(vec2(reflected.b, other.r)),
+                                                   packHalf2x16(other.gb), 0u));
+}
+#else
+// `sideChange`: for a two-sided voxel, the convergence statistics of both
+// sides (summed |luminance change| of direct + reflected, and the luminance
+// after), since its radiance texel shows only the darker one; x < 0 otherwise.
+vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
+    sideChange = vec2(-1.0);
+    vec4 d = imageLoad(direct, slotTexel(slot, 0u));
+    uint code = sideCodeOf(d);
+    int axis, strong;
+    vec3 n = bounceNormal(slot, code, axis, strong);
+    bool twoSided = axis >= 0;
+    vec3 albedo = voxelAlbedo(slot);
+#ifdef DVSGI_TRACED
+    // The rays of the pass before (DVSGI_RAY_TRACE) gathered it.
+    uvec3 tr = imageLoad(traced, slotTexel(slot, 0u)).xyz;
+    vec2 rb = unpackHalf2x16(tr.y);
+    vec3 reflected = vec3(unpackHalf2x16(tr.x), rb.x), other = vec3(rb.y, unpackHalf2x16(tr.z));
+#else
     float s = grid.originSize.w;
     // Start off the surface (two voxels: vxgi::bounceCones) so the cones do not gather the voxel itself.
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
-    vec3 albedo = voxelAlbedo(slot);
     vec3 reflected = albedo / PI * gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
     // The other side of a two-sided voxel gathers with one cone of 60 degrees
     // half-angle: six cones cost the bounce 40 % more on Sponza, where many
@@ -113,6 +160,7 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
         vec3 o = grid.originSize.xyz + (vec3(v) + 0.5 + m * pc.cone.surface.z) * s;
         other = albedo * traceCone(o, m, s * pc.cone.surface.z, m, 1.7320508, pc.cone, false).rgb;
     }
+#endif
     bool blended = false;
     vec3 shown = d.rgb;
     float sideTag = twoSided ? float(1 + 2 * axis + strong) : 0.0;
@@ -174,3 +222,4 @@ void main() {
         stats[group * BOUNCE_STATS_FLOATS + 1u] = partial[0].y;
     }
 }
+#endif

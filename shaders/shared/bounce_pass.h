@@ -11,7 +11,8 @@ DVSGI_BEGIN
 
 struct BouncePush {
     ConeParams cone;
-    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS), y (clipmap) the voxels' level
+    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS), y (clipmap) the voxels' level,
+                  // w rays per voxel (the ray pass)
     // Temporal blending of the reflected light (BIND_BOUNCE_HISTORY): x this
     // frame's history tag (0 = no blending, nothing read or written), y the tag
     // a slot's history must carry to be blended with (last frame's), z the
@@ -38,6 +39,12 @@ DVSGI_CONST(uint, BIND_BOUNCE_GRID, 8);       // clipmap: the bounced level's ow
 // it was written with.
 DVSGI_CONST(uint, BIND_BOUNCE_HISTORY, 9);
 DVSGI_CONST(uint, BIND_BOUNCE_SIDES, 10);  // per-slot side light (lib/voxel_sides.glsl): reads direct, writes reflected
+// Rays (--bounce-trace rays): per slot, RGBA32UI, the light the voxel's rays
+// gathered times its albedo (E rho / pi; for a two-sided voxel its favoured
+// side's, then its other side's), as half floats: x = rg, y = b and the other
+// side's r, z = its gb. Written by the ray pass, read by the shading pass after it.
+DVSGI_CONST(uint, BIND_BOUNCE_TRACED, 11);
+DVSGI_CONST(uint, BIND_BOUNCE_INDEX, 12);  // the slot index (voxel_data.h), read by the ray pass
 
 DVSGI_END
 

@@ -26,6 +26,7 @@ constexpr uint64_t kVisibilityBytes = 2;    // R16F light visibility
 constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specular
 constexpr uint64_t kOutputBytes = 16;       // RGBA32F
 constexpr uint64_t kHistoryBytes = 16 + 8;  // temporal history: RGBA32F sum, RGBA16F normal + depth
+constexpr uint64_t kRayResultBytes = 16;    // the bounce's rays' light per slot: RGBA32UI
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 
@@ -88,11 +89,18 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),
                        occupied * 2 * kVoxelLightBytes});
         out.push_back(filtering(in.voxels, occupied, "voxel filtering"));
-        // Cone samples are not counted: the bytes are those of the voxel's own
-        // attributes, direct light and result.
-        out.push_back({"voxel bounce",
-                       bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kVoxelLightBytes),
-                       bounces * occupied * kVoxelLightBytes});
+        // Cone and ray samples are not counted: the bytes are those of the
+        // voxel's own attributes, direct light and result (with rays, also
+        // the list and attributes read again by the second dispatch and the
+        // per-slot result it hands over).
+        PassTraffic bounce{"voxel bounce",
+                           bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kVoxelLightBytes),
+                           bounces * occupied * kVoxelLightBytes};
+        if (in.bounceRays) {
+            bounce.readBytes += bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kRayResultBytes);
+            bounce.writtenBytes += bounces * occupied * kRayResultBytes;
+        }
+        out.push_back(bounce);
         PassTraffic again = filtering(in.voxels, occupied, "voxel filtering (bounce)");
         again.readBytes *= bounces;
         again.writtenBytes *= bounces;

@@ -268,8 +268,11 @@ void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::Voxe
         history = {&voxelHistory_[l], historyTag_, use ? lastHistoryTag_ : UINT32_MAX,
                    settings_.voxelLight.temporalAlpha};
     }
-    bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, withStats ? bounceStats_.get() : nullptr,
-                    timers_.get(), trace, uint32_t(l), blend ? &history : nullptr);
+    const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
+    const uint32_t rays = vl.bounceTrace == vxgi::BounceTrace::Rays ? vl.bounceRays : 0u;
+    bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, rays,
+                    withStats ? bounceStats_.get() : nullptr, timers_.get(), trace, uint32_t(l),
+                    blend ? &history : nullptr);
 }
 
 // Voxelization, shadow maps and the voxel light up to (not including) the
@@ -571,7 +574,8 @@ bool Renderer::applySettings(const RenderSettings& s) {
     const bool light = o.normalWeighted != n.normalWeighted || o.occlusion != n.occlusion ||
                        o.softKappa != n.softKappa || o.bounceMode != n.bounceMode || o.bounces != n.bounces ||
                        o.convergence != n.convergence || o.maxBounces != n.maxBounces ||
-                       o.bounceStepFactor != n.bounceStepFactor || oc.stepFactor != nc.stepFactor ||
+                       o.bounceStepFactor != n.bounceStepFactor || o.bounceTrace != n.bounceTrace ||
+                       o.bounceRays != n.bounceRays || oc.stepFactor != nc.stepFactor ||
                        oc.minStepVoxels != nc.minStepVoxels || oc.maxDistance != nc.maxDistance ||
                        oc.firstSampleVoxels != nc.firstSampleVoxels || oc.clearance != nc.clearance ||
                        s.shadows != settings_.shadows || s.normalOffsetTexels != settings_.normalOffsetTexels ||

@@ -25,6 +25,12 @@ const uint32_t kBounce[] = {
 const uint32_t kBounceClipmap[] = {
 #include "shaders/bounce_clipmap.comp.inc"
 };
+const uint32_t kBounceRayTrace[] = {
+#include "shaders/bounce_ray_trace.comp.inc"
+};
+const uint32_t kBounceTraced[] = {
+#include "shaders/bounce_traced.comp.inc"
+};
 
 }  // namespace
 
@@ -35,6 +41,13 @@ gpu::ImageDesc historyImageDesc(uint32_t slots) {
     d.extent = {sh::VOXEL_SLOT_ROW, std::max(slots / sh::VOXEL_SLOT_ROW, 1u), 1};
     d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     d.name = "voxel radiance history";
+    return d;
+}
+
+gpu::ImageDesc tracedImageDesc(uint32_t slots) {
+    gpu::ImageDesc d = historyImageDesc(slots);
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    d.name = "voxel bounce rays' light";
     return d;
 }
 
@@ -53,6 +66,11 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::BouncePush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounce), layout, "voxel bounce");
+    gpu::LayoutDesc rays = layout;
+    rays.bindings.push_back({sh::BIND_BOUNCE_TRACED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    rays.bindings.push_back({sh::BIND_BOUNCE_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rayPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayTrace), rays, "voxel bounce rays");
+    rayShadePipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceTraced), rays, "voxel bounce (rays' light)");
     if (clipmap) {
         layout.bindings.push_back({sh::BIND_BOUNCE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs});
         clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
@@ -66,8 +84,9 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
 uint32_t BouncePass::statsFloats(uint32_t slots) { return voxelListMaxGroups(slots) * sh::BOUNCE_STATS_FLOATS; }
 
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
-                        const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers,
-                        const ClipTrace* clip, uint32_t level, const VoxelHistory* history) const {
+                        const ConeSettings& cone, uint32_t rayCount, const gpu::Buffer* stats,
+                        gpu::GpuTimers* timers, const ClipTrace* clip, uint32_t level,
+                        const VoxelHistory* history) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
     tracker.image(v.accum, gpu::use::ComputeRead).image(v.direct, gpu::use::ComputeRead);
     tracker.image(v.sides, gpu::use::ComputeReadWrite);
@@ -84,9 +103,17 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         vkCmdFillBuffer(cmd, stats->handle(), 0, VK_WHOLE_SIZE, 0);
         tracker.buffer(*stats, gpu::use::BufferComputeWrite);
     }
+    const bool rays = rayCount > 0 && !clip;
+    if (rays) {
+        const gpu::ImageDesc want = tracedImageDesc(v.slots);
+        if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) traced_ = gpu::Image(ctx_, want);
+        tracker.buffer(v.index, gpu::use::BufferComputeRead);
+        // The rays read the radiance and side light that the shading pass after them writes.
+        tracker.image(v.radiance, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);
+        tracker.image(traced_, gpu::use::ComputeWrite);
+    }
     tracker.flush(cmd);
-    const gpu::Pipeline& pipeline = clip ? clipPipeline_ : pipeline_;
-    gpu::bind(cmd, pipeline);
+    const gpu::Pipeline& pipeline = rays ? rayShadePipeline_ : (clip ? clipPipeline_ : pipeline_);
     gpu::Descriptors d;
     if (clip) {
         d.uniformBuffer(sh::BIND_CONE_GRID, clip->levels.handle())
@@ -103,13 +130,23 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_BOUNCE_STATS, stats ? stats->handle() : noStats_.handle())
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
         .storageImage(sh::BIND_BOUNCE_HISTORY, historyImage.view())
-        .storageImage(sh::BIND_BOUNCE_SIDES, v.sides.view())
-        .push(ctx_, cmd, pipeline);
+        .storageImage(sh::BIND_BOUNCE_SIDES, v.sides.view());
+    if (rays) d.storageImage(sh::BIND_BOUNCE_TRACED, traced_.view()).storageBuffer(sh::BIND_BOUNCE_INDEX, v.index.handle());
     const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
                                                   std::bit_cast<uint32_t>(history->alpha), 0u)
                                      : glm::uvec4(0u);
-    const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid), glm::uvec4(stats ? 1u : 0u, level, 0u, 0u),
-                              blend};
+    const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid),
+                              glm::uvec4(stats ? 1u : 0u, level, 0u, rays ? rayCount : 0u), blend};
+    if (rays) {
+        gpu::bind(cmd, rayPipeline_);
+        d.push(ctx_, cmd, rayPipeline_);
+        gpu::pushConstants(cmd, rayPipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+        tracker.image(traced_, gpu::use::ComputeRead);
+        tracker.image(v.radiance, gpu::use::ComputeReadWrite).image(v.sides, gpu::use::ComputeReadWrite).flush(cmd);
+    }
+    gpu::bind(cmd, pipeline);
+    d.push(ctx_, cmd, pipeline);
     gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
     if (stats) tracker.buffer(*stats, gpu::use::HostRead).flush(cmd);

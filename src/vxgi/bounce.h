@@ -2,6 +2,10 @@
 // filtered directional volumes; radiance = direct + albedo / pi x irradiance.
 // Repeated with filtering in between, or once per frame from the previous
 // frame's volumes (feedback), it adds one bounce of light each time.
+// With rays (--bounce-trace rays, a fitted grid's) a first dispatch marches
+// each voxel's rays through the radiance volume, voxel by voxel, and keeps
+// what they gathered per slot; the second shades as the cones' pass does.
+// Two dispatches, because the rays read the radiance the shading writes.
 #pragma once
 
 #include "gpu/pipeline.h"
@@ -28,6 +32,8 @@ struct VoxelHistory {
     float alpha = 1.0f;        // weight of this frame's value
 };
 gpu::ImageDesc historyImageDesc(uint32_t slots);
+// The rays' light per slot (BIND_BOUNCE_TRACED in shared/bounce_pass.h): RGBA32UI, three half-float pairs.
+gpu::ImageDesc tracedImageDesc(uint32_t slots);
 
 class BouncePass {
 public:
@@ -41,16 +47,23 @@ public:
     // levels from it up (clip's ConeLevels and volumes: the previous frame's
     // windows when the bounce feeds back); its directional volumes are read.
     // With `history`, each voxel's new radiance is blended with its last one.
+    // `rays` > 0: that many rays per voxel instead of the cones (not with `clip`).
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, VkSampler volumeSampler,
-                const ConeSettings& cone, const gpu::Buffer* stats, gpu::GpuTimers* timers,
+                const ConeSettings& cone, uint32_t rays, const gpu::Buffer* stats, gpu::GpuTimers* timers,
                 const ClipTrace* clip = nullptr, uint32_t level = 0, const VoxelHistory* history = nullptr) const;
     static uint32_t statsFloats(uint32_t slots);
+    // Bytes of the rays' per-slot results (0 until rays were traced).
+    VkDeviceSize rayBytes() const { return traced_.handle() ? traced_.memorySize() : 0; }
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_, clipPipeline_;
     gpu::Buffer noStats_;     // bound when no statistics are asked for (the binding must stay valid)
     gpu::Image noHistory_;    // bound when nothing is blended
+    gpu::Pipeline rayPipeline_, rayShadePipeline_;
+    // What the rays gathered, per slot (BIND_BOUNCE_TRACED): made at the first
+    // ray bounce and again when the slot capacity changes.
+    mutable gpu::Image traced_;
 };
 
 }  // namespace dvsgi::vxgi

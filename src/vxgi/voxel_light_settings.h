@@ -24,6 +24,12 @@ enum class BounceMode {
     Feedback,  // one bounce per frame reading the previous frame's filtered radiance
 };
 
+// How the voxel bounce gathers each voxel's incoming light.
+enum class BounceTrace {
+    Cones,  // six cones through the filtered directional volumes (the paper)
+    Rays,   // rays marched voxel by voxel through the radiance volume (bounce.h)
+};
+
 struct VoxelLightSettings {
     bool normalWeighted = true;           // eq. 5 (else Lambert N.L, eq. 2)
     Occlusion occlusion = Occlusion::PerLight;  // global override of each light's mode
@@ -39,6 +45,8 @@ struct VoxelLightSettings {
     // (bounceCones()): beta = 1 costs half of 0.5 and changes the converged
     // indirect light by 1.8 % (docs/quality.md).
     float bounceStepFactor = 1.0f;
+    BounceTrace bounceTrace = BounceTrace::Cones;
+    uint32_t bounceRays = 16;  // Rays: per voxel (a two-sided voxel's other side: a quarter, at least 4)
     // Feedback frames: weight of this frame's bounced radiance against what
     // the same voxel had after last frame's (1 = no blending). Dropped, so
     // the new value is taken as it is, when lights, static geometry or

@@ -1,0 +1,101 @@
+// Diffuse rays through the voxel grid for the voxel bounce (bounce.comp's
+// DVSGI_RAY_TRACE): each ray walks the grid voxel by voxel (every voxel it
+// crosses, Amanatides & Woo) and takes the radiance of the first occupied
+// one, so a wall one voxel thick stops it however it meets the wall. Needs
+// `grid`, the radiance volume `outRadiance` (read only in that pass), the
+// side light `sides` and lib/voxel_index.glsl.
+
+uint hashU(uint x) {
+    x ^= x >> 16;
+    x *= 0x7feb352du;
+    x ^= x >> 15;
+    x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+
+// What a ray travelling along d sees of occupied voxel c whose radiance
+// texel is r: a two-sided voxel (lib/voxel_sides.glsl) shows the side it
+// meets (direct + reflected), others their radiance.
+vec3 radianceSeen(ivec3 c, vec4 r, vec3 d) {
+    uint code = sideCodeOfOpacity(r.a);
+    int axis = twoSidedAxis(code);
+    if (axis < 0) return r.rgb;
+    uint slot = voxelSlotAt(c);
+    if (slot == 0u) return r.rgb;
+    uvec4 t = imageLoad(sides, slotTexel(slot - 1u, 0u));
+    // Travelling toward -axis a ray meets the +axis side (x, z).
+    bool plusSide = d[axis] < 0.0;
+    return unpackRgb9e5(plusSide ? t.x : t.y) + unpackRgb9e5(plusSide ? t.z : t.w);
+}
+
+// Whether the directional volumes' cell c of mip `lod` (cells of 2^(lod+1)
+// voxels) holds any occupied voxel: its opacity is a composite and mean of
+// its voxels', so it is 0 only where all are empty (the -X volume, the
+// atlas's first, is as good as any).
+bool cellEmpty(ivec3 c, int lod) { return texelFetch(directional, c, lod).a <= 0.0; }
+
+// The ray parameter where a ray from p along d (1/d = inv) leaves the box
+// [lo, lo + size).
+float exitDistance(vec3 p, vec3 inv, vec3 lo, float size) {
+    vec3 far = lo + step(vec3(0.0), inv) * size;
+    vec3 t = (far - p) * inv;
+    return min(t.x, min(t.y, t.z));
+}
+
+// Whether occupied voxel c belongs to the surface a ray leaving voxel
+// `self` (centre, normal n) starts on: within a voxel and a half of its
+// plane and facing the same way. A surface voxelizes into one or two layers;
+// rays start one voxel off, which is the second layer's when there is one.
+bool onOwnSurface(ivec3 c, vec3 self, vec3 n) {
+    if (abs(dot(vec3(c) + 0.5 - self, n)) >= 1.5) return false;
+    uint slot = voxelSlotAt(c);
+    return slot != 0u && dot(voxelNormal(slot - 1u), n) > 0.8;
+}
+
+// Radiance met by a ray from voxel-space point p along unit d: the first
+// occupied voxel not on the surface of `self` (centre, normal n), or nothing
+// where it leaves the grid. Empty space is crossed a whole cell at a time,
+// eight voxels or two, wherever the directional volumes' mips show the cell
+// empty.
+vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
+    vec3 inv = 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7)));
+    float t = 0.0;
+    for (int i = 0; i < 4 * N; ++i) {
+        vec3 q = p + d * t;
+        ivec3 c = ivec3(floor(q));
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) break;
+        float size = 1.0;
+        if (cellEmpty(c >> 3, 2)) {
+            size = 8.0;
+        } else if (cellEmpty(c >> 1, 0)) {
+            size = 2.0;
+        } else {
+            vec4 r = imageLoad(outRadiance, c);
+            if (r.a > 0.0 && !onOwnSurface(c, self, n)) return radianceSeen(c, r, d);
+        }
+        // Just past the cell's exit (1e-3 voxel), into the next one.
+        t = exitDistance(p, inv, floor(vec3(c) / size) * size, size) + 1e-3;
+    }
+    return vec3(0.0);
+}
+
+// The mean radiance over `count` cosine-distributed rays about n from voxel
+// v, i.e. E / pi. The directions follow the R2 sequence (well spread over
+// the disk for any count), shifted by `seed` per voxel so that neighbours do
+// not share their gaps. The rays start `offset` voxels off v's centre along n.
+vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed) {
+    int N = int(grid.dims.x);
+    vec3 origin = vec3(v) + 0.5 + n * offset;
+    vec3 t = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
+    vec3 b = cross(n, t);
+    vec2 shift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
+    vec3 sum = vec3(0.0);
+    for (uint i = 0u; i < count; ++i) {
+        vec2 u = fract(shift + float(i) * vec2(0.7548776662, 0.5698402910));
+        float rad = sqrt(u.x), phi = TWO_PI * u.y;
+        vec3 d = normalize(t * (rad * cos(phi)) + b * (rad * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
+        sum += voxelRay(origin, d, vec3(v) + 0.5, n, N);
+    }
+    return sum / float(max(count, 1u));
+}
