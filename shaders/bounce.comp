@@ -34,7 +34,7 @@ layout(set = 0, binding = BIND_BOUNCE_HISTORY, rgba32ui) uniform uimage3D histor
 layout(set = 0, binding = BIND_BOUNCE_SIDES, rgba32ui) uniform uimage3D sides;
 VOXEL_LIST_BLOCK(BIND_BOUNCE_LIST, readonly);
 #if defined(DVSGI_RAY_TRACE) || defined(DVSGI_TRACED)
-layout(set = 0, binding = BIND_BOUNCE_TRACED, rgba32ui) uniform uimage3D traced;
+layout(set = 0, binding = BIND_BOUNCE_TRACED, rg32ui) uniform uimage3D traced;
 #endif
 #ifdef DVSGI_RAY_TRACE
 VOXEL_INDEX_BLOCK(BIND_BOUNCE_INDEX, readonly);
@@ -123,10 +123,12 @@ void main() {
     uint seed = hashU(uint(v.x) | uint(v.y) << 10 | uint(v.z) << 20);
     vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed);
     vec3 other = axis >= 0 ? albedo * voxelRaysCosine(v, -n, RAY_OFFSET, max(pc.flags.w / 4u, 4u), hashU(seed)) : vec3(0.0);
-    // Half floats: in RGB9E5 a bounce's increment fell under the step in a
-    // bright closed room and the series stalled 1 % short.
-    imageStore(traced, slotTexel(entry, 0u), uvec4(packHalf2x16(reflected.rg), packHalf2x16(vec2(reflected.b, other.r)),
-                                                   packHalf2x16(other.gb), 0u));
+    // A one-sided voxel's light as half floats: in RGB9E5 a bounce's increment
+    // fell under the step in a bright closed room and the series stalled 1 %
+    // short. A two-sided voxel's two sides as RGB9E5, as its side light keeps them.
+    uvec2 packed = axis >= 0 ? uvec2(packRgb9e5(reflected), packRgb9e5(other))
+                             : uvec2(packHalf2x16(reflected.rg), packHalf2x16(vec2(reflected.b, 0.0)));
+    imageStore(traced, slotTexel(entry, 0u), uvec4(packed, 0u, 0u));
 }
 #else
 // `sideChange`: for a two-sided voxel, the convergence statistics of both
@@ -142,9 +144,9 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
     vec3 albedo = voxelAlbedo(slot);
 #ifdef DVSGI_TRACED
     // The rays of the pass before (DVSGI_RAY_TRACE) gathered it.
-    uvec3 tr = imageLoad(traced, slotTexel(slot, 0u)).xyz;
-    vec2 rb = unpackHalf2x16(tr.y);
-    vec3 reflected = vec3(unpackHalf2x16(tr.x), rb.x), other = vec3(rb.y, unpackHalf2x16(tr.z));
+    uvec2 tr = imageLoad(traced, slotTexel(slot, 0u)).xy;
+    vec3 reflected = twoSided ? unpackRgb9e5(tr.x) : vec3(unpackHalf2x16(tr.x), unpackHalf2x16(tr.y).x);
+    vec3 other = twoSided ? unpackRgb9e5(tr.y) : vec3(0.0);
 #else
     float s = grid.originSize.w;
     // Start off the surface (two voxels: vxgi::bounceCones) so the cones do not gather the voxel itself.

@@ -39,10 +39,10 @@ DVSGI_CONST(uint, BIND_BOUNCE_GRID, 8);       // clipmap: the bounced level's ow
 // it was written with.
 DVSGI_CONST(uint, BIND_BOUNCE_HISTORY, 9);
 DVSGI_CONST(uint, BIND_BOUNCE_SIDES, 10);  // per-slot side light (lib/voxel_sides.glsl): reads direct, writes reflected
-// Rays (--bounce-trace rays): per slot, RGBA32UI, the light the voxel's rays
-// gathered times its albedo (E rho / pi; for a two-sided voxel its favoured
-// side's, then its other side's), as half floats: x = rg, y = b and the other
-// side's r, z = its gb. Written by the ray pass, read by the shading pass after it.
+// Rays (--bounce-trace rays): per slot, RG32UI, the light the voxel's rays
+// gathered times its albedo (E rho / pi): a one-sided voxel's as half floats
+// (x = rg, y = b), a two-sided voxel's favoured side's then its other side's
+// as RGB9E5. Written by the ray pass, read by the shading pass after it.
 DVSGI_CONST(uint, BIND_BOUNCE_TRACED, 11);
 DVSGI_CONST(uint, BIND_BOUNCE_INDEX, 12);  // the slot index (voxel_data.h), read by the ray pass
 

@@ -26,7 +26,7 @@ constexpr uint64_t kVisibilityBytes = 2;    // R16F light visibility
 constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specular
 constexpr uint64_t kOutputBytes = 16;       // RGBA32F
 constexpr uint64_t kHistoryBytes = 16 + 8;  // temporal history: RGBA32F sum, RGBA16F normal + depth
-constexpr uint64_t kRayResultBytes = 16;    // the bounce's rays' light per slot: RGBA32UI
+constexpr uint64_t kRayResultBytes = 8;     // the bounce's rays' light per slot: RG32UI
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 

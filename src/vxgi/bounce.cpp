@@ -46,6 +46,7 @@ gpu::ImageDesc historyImageDesc(uint32_t slots) {
 
 gpu::ImageDesc tracedImageDesc(uint32_t slots) {
     gpu::ImageDesc d = historyImageDesc(slots);
+    d.format = VK_FORMAT_R32G32_UINT;
     d.usage = VK_IMAGE_USAGE_STORAGE_BIT;
     d.name = "voxel bounce rays' light";
     return d;

@@ -32,7 +32,7 @@ struct VoxelHistory {
     float alpha = 1.0f;        // weight of this frame's value
 };
 gpu::ImageDesc historyImageDesc(uint32_t slots);
-// The rays' light per slot (BIND_BOUNCE_TRACED in shared/bounce_pass.h): RGBA32UI, three half-float pairs.
+// The rays' light per slot (BIND_BOUNCE_TRACED in shared/bounce_pass.h): RG32UI.
 gpu::ImageDesc tracedImageDesc(uint32_t slots);
 
 class BouncePass {
