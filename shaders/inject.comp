@@ -60,7 +60,11 @@ void main() {
     vec3 n = voxelNormal(slot);
     float s = grid.originSize.w;
     vec3 centre = grid.originSize.xyz + (vec3(v) + 0.5) * s;
-    // Lit position: the voxel centre pushed half a voxel along its normal.
+    // Shadows are looked up at the voxel centre pushed half a voxel along its
+    // normal (off the surface). The light's falloff is taken at the centre:
+    // over where planes cross voxels the surface lies there on average; taken
+    // at P, half a voxel nearer a point light, cornell-lights' first two
+    // bounces came out 1.0 % and 1.2 % too bright at 64^3 (docs/quality.md).
     vec3 P = centre + n * (0.5 * s);
     // A two-sided voxel's sides (+axis, -axis) are lit as faces with those
     // normals, from just outside the voxel on their side: a thin wall's
@@ -81,7 +85,7 @@ void main() {
         GpuLight light = lights[i];
         vec3 L;
         float dist;
-        vec3 E = lightIrradiance(light, P, L, dist);
+        vec3 E = lightIrradiance(light, centre, L, dist);
         if (all(equal(E, vec3(0.0)))) continue;
         uint mode = pc.flags.z != OCCLUSION_PER_LIGHT ? pc.flags.z : light.shadow.z;
         bool area = uint(light.position.w) == LIGHT_AREA;

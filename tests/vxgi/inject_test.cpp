@@ -190,8 +190,9 @@ dvec3 referenceRadiance(const AccumVolume& a, const SyntheticVoxel& v, int x, in
                         const std::vector<scene::PlacedLight>& lights, const vxgi::GridSpec& g, Attenuation mode) {
     const Channels c = channels(a, x, y, z);
     const dvec3 n = voxelNormal(c);
-    const double s = g.voxelSize;
-    const dvec3 P = dvec3(g.origin) + (dvec3(x, y, z) + 0.5) * s + n * (0.5 * s);
+    // The light arrives at the voxel's centre (where the surface lies, on
+    // average over where planes cross voxels); only shadows are looked up off it.
+    const dvec3 P = dvec3(g.origin) + (dvec3(x, y, z) + 0.5) * double(g.voxelSize);
     dvec3 radiance = c.emission;
     for (const scene::PlacedLight& pl : lights) {
         dvec3 L;
@@ -419,9 +420,7 @@ TEST_F(InjectDirect, TwoSidedVoxelsAreLitPerSide) {
                     if (code < 1 || code > 3) continue;
                     ++twoSided;
                     const int axis = int(code) - 1;
-                    const dvec3 n = voxelNormal(c);
-                    const dvec3 P = dvec3(g.origin) + (dvec3(x, y, z) + 0.5) * double(g.voxelSize) +
-                                    n * (0.5 * double(g.voxelSize));
+                    const dvec3 P = dvec3(g.origin) + (dvec3(x, y, z) + 0.5) * double(g.voxelSize);
                     const glm::uvec4 got = sides[voxelIndex(kN, x, y, z)];
                     EXPECT_EQ(got.z, 0u);
                     EXPECT_EQ(got.w, 0u);
