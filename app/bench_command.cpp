@@ -196,7 +196,7 @@ void measure(const gpu::Context& ctx, const scene::Scene& scene, const SceneGeom
             {"n", v->grid.n},
             {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
             {"voxel_size", v->grid.voxelSize},
-            {"bytes_per_grid_voxel", v->bytesPerGridVoxel()},
+            {"bytes_per_grid_voxel", renderer.voxelBytesPerGridVoxel()},
             {"voxel_slots", v->slots},
             {"voxelizer", renderer.voxelizer() ? vxgi::voxelizerName(renderer.voxelizer()->kind()) : "none"},
             {"conservative", renderer.voxelizer() && renderer.voxelizer()->hardwareConservative() ? "hardware"

@@ -64,7 +64,9 @@ void printTable(const render::FrameStats& stats, const std::vector<render::Memor
     std::printf("GPU memory: %.1f MiB\n", double(total) / (1024.0 * 1024.0));
 }
 
-void printVoxelGrid(const vxgi::VoxelVolumes& v, const vxgi::Voxelizer& voxelizer) {
+void printVoxelGrid(const render::Renderer& renderer) {
+    const vxgi::VoxelVolumes& v = *renderer.volumes();
+    const vxgi::Voxelizer& voxelizer = *renderer.voxelizer();
     const vxgi::GridSpec& g = v.grid;
     const char* how = voxelizer.kind() == vxgi::VoxelizerKind::Compute ? "compute voxelizer (exact)"
                       : voxelizer.kind() == vxgi::VoxelizerKind::Pv    ? "progressive screen-space voxelization"
@@ -73,12 +75,12 @@ void printVoxelGrid(const vxgi::VoxelVolumes& v, const vxgi::Voxelizer& voxelize
     std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s, %u voxel slots\n", g.n,
                 g.origin.x, g.origin.y, g.origin.z, g.voxelSize, how, v.slots);
     uint64_t total = 0;
-    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n, v.slots)) {
+    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n, v.slots, renderer.bounceRays())) {
         std::printf("  %-40s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
         total += m.bytes;
     }
     std::printf("  %-61s %9.1f MiB = %.1f bytes per grid voxel\n", "all voxel data", double(total) / 1048576.0,
-                v.bytesPerGridVoxel());
+                renderer.voxelBytesPerGridVoxel());
 }
 
 glm::dvec3 meanRgb(const image::ImageRGBA32F& img) {
@@ -110,7 +112,7 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
                        {"origin", {v->grid.origin.x, v->grid.origin.y, v->grid.origin.z}},
                        {"voxel_size", v->grid.voxelSize},
                        {"slots", v->slots},
-                       {"bytes_per_grid_voxel", v->bytesPerGridVoxel()}};
+                       {"bytes_per_grid_voxel", renderer.voxelBytesPerGridVoxel()}};
     }
     j["settings"] = settingsJson(o, kRender);
     j["validation_errors"] = ctx.validationErrors();
@@ -217,7 +219,7 @@ int runRender(const RenderOptions& o) {
     const bool moving = o.frames > 1 || !scene.animations.empty() || path;
     if (path) renderer.setCameraPath(std::move(path));
     if (!o.quiet && renderer.volumes()) {
-        printVoxelGrid(*renderer.volumes(), *renderer.voxelizer());
+        printVoxelGrid(renderer);
         const std::vector<const vxgi::VoxelVolumes*> levels = renderer.levelVolumes();
         if (o.settings.clipmap.levels > 0)
             std::printf("voxel clipmap: %zu levels of %u^3 following the camera (the grid above is level 0's, its "
@@ -268,7 +270,7 @@ int runRender(const RenderOptions& o) {
     }
     if (!o.quiet && renderer.volumes() && renderer.volumes()->slots != slots)
         std::printf("voxel slots grew from %u to %u (more occupied voxels): %.1f bytes per grid voxel\n", slots,
-                    renderer.volumes()->slots, renderer.volumes()->bytesPerGridVoxel());
+                    renderer.volumes()->slots, renderer.voxelBytesPerGridVoxel());
     if (!o.metricsPath.empty()) {
         nlohmann::json j = metricsJson(o, ctx, renderer, stats, first, scene);
         // Mean radiance of the last image written, so scripts can compare runs

@@ -269,7 +269,7 @@ void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::Voxe
                    settings_.voxelLight.temporalAlpha};
     }
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
-    const uint32_t rays = vl.bounceTrace == vxgi::BounceTrace::Rays ? vl.bounceRays : 0u;
+    const uint32_t rays = bounceRays() ? vl.bounceRays : 0u;
     bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, rays,
                     withStats ? bounceStats_.get() : nullptr, timers_.get(), trace, uint32_t(l),
                     blend ? &history : nullptr);

@@ -150,6 +150,10 @@ public:
     const ShadowPass& shadows() const { return *shadows_; }
     // The voxel volumes (with --clipmap, level 0's, the finest).
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
+    // Whether the voxel bounce marches rays (--bounce-trace rays on a fitted grid; clipmap levels trace cones).
+    bool bounceRays() const { return settings_.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && clip_.empty(); }
+    // The voxel data per grid voxel (VoxelVolumes::bytesPerGridVoxel, with the rays' results when they run).
+    double voxelBytesPerGridVoxel() const { return volumes_->bytesPerGridVoxel(bounceRays()); }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
     std::vector<const vxgi::VoxelVolumes*> levelVolumes() const;
     // --clipmap: what its cones sample (left in gpu::use::ComputeRead after a frame); else null.

@@ -65,11 +65,11 @@ uint32_t roundSlotCapacity(uint32_t n, uint64_t wanted) {
 
 uint32_t defaultSlotCapacity(uint32_t n) { return roundSlotCapacity(n, 16ull * n * n); }
 
-std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots) {
+std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRays) {
     const uint64_t n3 = uint64_t(n) * n * n;
     uint64_t directional = 0;
     for (uint64_t s = n / 2; s >= 1; s /= 2) directional += s * s * s * 8;
-    return {
+    std::vector<VolumeMemory> items = {
         {"voxel slot index", "uint32 buffer", n3 * 4},
         {"voxel attributes (13 channels per slot)", "R32_SFLOAT", uint64_t(slots) * sh::VOXEL_CHANNELS * 4},
         {"voxel direct light (per slot)", "R16G16B16A16_SFLOAT", uint64_t(slots) * 8},
@@ -78,11 +78,14 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots) {
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
         {"occupied-voxel list", "uint32 buffer", voxelListBytes(slots)},
     };
+    // BouncePass's (tracedImageDesc), per slot like the above.
+    if (bounceRays) items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * 8});
+    return items;
 }
 
-double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots) {
+double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots, bool bounceRays) {
     uint64_t total = 0;
-    for (const VolumeMemory& m : volumeMemory(n, slots)) total += m.bytes;
+    for (const VolumeMemory& m : volumeMemory(n, slots, bounceRays)) total += m.bytes;
     return double(total) / (double(n) * n * n);
 }
 
