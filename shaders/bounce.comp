@@ -120,9 +120,9 @@ void main() {
     vec3 albedo = voxelAlbedo(entry);
     // The same rays every bounce and frame: a static scene converges to one
     // light, with no noise from frame to frame.
-    uint seed = hashU(uint(v.x) | uint(v.y) << 10 | uint(v.z) << 20);
+    uint seed = raySeed(v);
     vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed);
-    vec3 other = axis >= 0 ? albedo * voxelRaysCosine(v, -n, RAY_OFFSET, max(pc.flags.w / 4u, 4u), hashU(seed)) : vec3(0.0);
+    vec3 other = axis >= 0 ? albedo * voxelRaysCosine(v, -n, RAY_OFFSET, max(pc.flags.w / 4u, 4u), rayHash(seed)) : vec3(0.0);
     // A one-sided voxel's light as half floats: in RGB9E5 a bounce's increment
     // fell under the step in a bright closed room and the series stalled 1 %
     // short. A two-sided voxel's two sides as RGB9E5, as its side light keeps them.

@@ -5,15 +5,6 @@
 // `grid`, the radiance volume `outRadiance` (read only in that pass), the
 // side light `sides` and lib/voxel_index.glsl.
 
-uint hashU(uint x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
 // What a ray travelling along d sees of occupied voxel c whose radiance
 // texel is r: a two-sided voxel (lib/voxel_sides.glsl) shows the side it
 // meets (direct + reflected), others their radiance.
@@ -92,7 +83,7 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed) {
     vec2 shift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
     vec3 sum = vec3(0.0);
     for (uint i = 0u; i < count; ++i) {
-        vec2 u = fract(shift + float(i) * vec2(0.7548776662, 0.5698402910));
+        vec2 u = fract(shift + float(i) * vec2(RAY_R2_U, RAY_R2_V));
         float rad = sqrt(u.x), phi = TWO_PI * u.y;
         vec3 d = normalize(t * (rad * cos(phi)) + b * (rad * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
         sum += voxelRay(origin, d, vec3(v) + 0.5, n, N);

@@ -46,6 +46,21 @@ DVSGI_CONST(uint, BIND_BOUNCE_SIDES, 10);  // per-slot side light (lib/voxel_sid
 DVSGI_CONST(uint, BIND_BOUNCE_TRACED, 11);
 DVSGI_CONST(uint, BIND_BOUNCE_INDEX, 12);  // the slot index (voxel_data.h), read by the ray pass
 
+// The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU
+// march: the R2 sequence over the unit square, shifted per voxel by a hash.
+DVSGI_CONST(float, RAY_R2_U, 0.7548776662);
+DVSGI_CONST(float, RAY_R2_V, 0.5698402910);
+DVSGI_FUNCTION uint rayHash(uint x) {
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    x ^= x >> 16u;
+    return x;
+}
+// Grid voxel v's shift (low 16 bits: u, high: v, in 1/65536).
+DVSGI_FUNCTION uint raySeed(ivec3 v) { return rayHash(uint(v.x) | uint(v.y) << 10u | uint(v.z) << 20u); }
+
 DVSGI_END
 
 #endif

@@ -10,6 +10,7 @@
 
 #include "gpu_fixture.h"
 #include "light_helpers.h"
+#include "shared/bounce_pass.h"
 #include "vxgi/voxel_light_settings.h"
 
 namespace dvsgi::test {
@@ -20,15 +21,6 @@ constexpr float kHalf = 0.71875f;  // walls in the middle of voxel layers 4 and 
 constexpr int kLow = 4, kHigh = 27, kInnerLo = 6, kInnerHi = 25;
 constexpr float kRho = 0.5f, kL = 1.0f;
 constexpr uint32_t kRays = 16;
-
-uint32_t hashU(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
 
 // The inward normal of a voxel in exactly one wall layer (the box's faces; the
 // top is open), or zero for voxels in none or in two (edges: their normal is
@@ -72,7 +64,7 @@ float march(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, glm::ivec3 s
 // voxelRaysCosine's mean over its rays: R2 directions shifted per voxel,
 // cosine-distributed about n, from one voxel off the voxel's centre.
 float cpuRays(const Rgba16Volume& radiance, glm::ivec3 v, glm::vec3 n) {
-    const uint32_t seed = hashU(uint32_t(v.x) | uint32_t(v.y) << 10 | uint32_t(v.z) << 20);
+    const uint32_t seed = shader::raySeed(v);
     const glm::vec3 t = glm::normalize(std::fabs(n.x) < 0.9f ? glm::cross(n, glm::vec3(1, 0, 0))
                                                              : glm::cross(n, glm::vec3(0, 1, 0)));
     const glm::vec3 b = glm::cross(n, t);
@@ -80,7 +72,7 @@ float cpuRays(const Rgba16Volume& radiance, glm::ivec3 v, glm::vec3 n) {
     const glm::vec2 shift(float(seed & 0xffffu) / 65536.0f, float(seed >> 16) / 65536.0f);
     double sum = 0.0;
     for (uint32_t i = 0; i < kRays; ++i) {
-        const glm::vec2 u = glm::fract(shift + float(i) * glm::vec2(0.7548776662f, 0.5698402910f));
+        const glm::vec2 u = glm::fract(shift + float(i) * glm::vec2(shader::RAY_R2_U, shader::RAY_R2_V));
         const float rad = std::sqrt(u.x), phi = 6.28318530717959f * u.y;
         const glm::vec3 d = glm::normalize(t * (rad * std::cos(phi)) + b * (rad * std::sin(phi)) +
                                            n * std::sqrt(std::max(1.0f - u.x, 0.0f)));
