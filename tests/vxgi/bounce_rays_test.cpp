@@ -36,7 +36,8 @@ glm::vec3 wallNormal(glm::ivec3 c) {
 }
 
 // What a ray from p along d meets in `radiance`: the first occupied voxel not
-// on the surface of `self` (normal n), as voxelRay does, cell by cell.
+// on the surface of `self` (normal n), as voxelRay does, cell by cell
+// (nothing if that is the cell it starts in).
 float march(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, glm::ivec3 self, glm::vec3 n) {
     glm::ivec3 c = glm::ivec3(glm::floor(p));
     glm::ivec3 step(0);
@@ -47,13 +48,14 @@ float march(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, glm::ivec3 s
         tDelta[a] = 1.0f / std::fabs(d[a]);
         tMax[a] = ((d[a] > 0.0f ? float(c[a] + 1) : float(c[a])) - p[a]) / d[a];
     }
-    for (;;) {
+    for (bool first = true;; first = false) {
         for (int a = 0; a < 3; ++a)
             if (c[a] < 0 || c[a] >= int(kN)) return 0.0f;
         const glm::vec4 r = radiance.at(c.x, c.y, c.z);
         if (r.a > 0.0f) {
             const bool inSlab = std::fabs(glm::dot(glm::vec3(c - self), n)) < 1.5f;
-            if (!(inSlab && glm::dot(wallNormal(c), n) > 0.8f)) return r.r;
+            // Starting inside another surface's voxel: its back, no light.
+            if (!(inSlab && glm::dot(wallNormal(c), n) > 0.8f)) return first ? 0.0f : r.r;
         }
         const int a = tMax.x <= tMax.y && tMax.x <= tMax.z ? 0 : (tMax.y <= tMax.z ? 1 : 2);
         c[a] += step[a];
