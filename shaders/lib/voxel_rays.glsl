@@ -21,10 +21,12 @@ vec3 radianceSeen(ivec3 c, vec4 r, vec3 d) {
 }
 
 // Whether the directional volumes' cell c of mip `lod` (cells of 2^(lod+1)
-// voxels) holds any occupied voxel: its opacity is a composite and mean of
+// voxels) holds no occupied voxel: its opacity is a composite and mean of
 // its voxels', so it is 0 only where all are empty (the -X volume, the
-// atlas's first, is as good as any).
-bool cellEmpty(ivec3 c, int lod) { return texelFetch(directional, c, lod).a <= 0.0; }
+// atlas's first, is as good as any). A grid too small for that mip has none.
+bool cellEmpty(ivec3 c, int lod) {
+    return lod < int(grid.dims.z) && texelFetch(directional, c, lod).a <= 0.0;
+}
 
 // The ray parameter where a ray from p along d (1/d = inv) leaves the box
 // [lo, lo + size).
@@ -47,10 +49,10 @@ bool onOwnSurface(ivec3 c, vec3 self, vec3 n) {
 // Radiance met by a ray from voxel-space point p along unit d: the first
 // occupied voxel not on the surface of `self` (centre, normal n), or nothing
 // where it leaves the grid. Empty space is crossed a whole cell at a time,
-// eight voxels or two, wherever the directional volumes' mips show the cell
-// empty. A ray that starts inside another surface's voxel meets that
-// surface's back at no distance: no light (a floor under a box standing on
-// it). Taking that voxel's radiance instead made two surfaces a voxel apart
+// sixteen voxels, eight, four or two, wherever the directional volumes' mips
+// show the cell empty. A ray that starts inside another surface's voxel
+// meets that surface's back at no distance: no light (a floor under a box
+// standing on it). Taking that voxel's radiance instead made two surfaces a voxel apart
 // light each other without loss: with albedo 1 (the Cornell box's white) the
 // light between them never converged.
 vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
@@ -61,8 +63,12 @@ vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
         ivec3 c = ivec3(floor(q));
         if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) break;
         float size = 1.0;
-        if (cellEmpty(c >> 3, 2)) {
+        if (cellEmpty(c >> 4, 3)) {
+            size = 16.0;
+        } else if (cellEmpty(c >> 3, 2)) {
             size = 8.0;
+        } else if (cellEmpty(c >> 2, 1)) {
+            size = 4.0;
         } else if (cellEmpty(c >> 1, 0)) {
             size = 2.0;
         } else {
