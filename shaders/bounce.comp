@@ -13,6 +13,10 @@
 // (lib/voxel_sides.glsl) gathers over the hemisphere of the side its weights
 // favour with the six cones and over the other's with one wide cone; both go
 // to its side light, and its radiance texel shows the darker side.
+// Built with RAY_TRACE (--bounce-trace rays), the first of two dispatches:
+// each voxel's rays through the radiance volume (lib/voxel_rays.glsl), their
+// light kept per slot; built with TRACED, the second: as below, with that
+// light instead of the cones'.
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
@@ -107,6 +111,8 @@ vec3 bounceNormal(uint slot, uint code, out int axis, out int strong) {
 }
 
 #ifdef DVSGI_RAY_TRACE
+// Rays start a voxel off the voxel's centre (docs/quality.md: from two off,
+// as the cones start, they missed what stands beside the surface).
 #ifndef RAY_OFFSET
 #define RAY_OFFSET 1.0
 #endif
