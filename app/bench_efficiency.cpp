@@ -72,7 +72,7 @@ void modelTraffic(const gpu::Context& ctx, const render::Renderer& renderer, con
     in.staticGeometryBytes = geometry.staticBytes;
     in.dynamicGeometryBytes = geometry.dynamicBytes;
     in.bounces = bounces;
-    in.bounceRays = s.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && s.clipmap.levels == 0;
+    in.bounceRays = renderer.bounceRays();
     if (const vxgi::VoxelVolumes* volumes = renderer.volumes()) {
         const auto start = std::chrono::steady_clock::now();
         const vxgi::VoxelCounts counts = vxgi::countVoxels(ctx, *volumes);

@@ -25,7 +25,7 @@ Culprit culprit(std::string_view resource, const RenderOptions& o) {
         c.setting = "--voxels " + std::to_string(o.settings.voxels);
         uint64_t total = 0;
         const uint32_t n = o.settings.voxels;
-        const bool rays = o.settings.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && o.settings.clipmap.levels == 0;
+        const bool rays = render::bounceTracesRays(o.settings);
         for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(n, vxgi::defaultSlotCapacity(n), rays)) total += m.bytes;
         c.total = "; the voxel volumes need " + formatBytes(double(total)) + " in all";
         c.advice = "fewer --voxels";

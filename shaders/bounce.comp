@@ -147,13 +147,13 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
     int axis, strong;
     vec3 n = bounceNormal(slot, code, axis, strong);
     bool twoSided = axis >= 0;
-    vec3 albedo = voxelAlbedo(slot);
 #ifdef DVSGI_TRACED
     // The rays of the pass before (DVSGI_RAY_TRACE) gathered it.
     uvec2 tr = imageLoad(traced, slotTexel(slot, 0u)).xy;
     vec3 reflected = twoSided ? unpackRgb9e5(tr.x) : vec3(unpackHalf2x16(tr.x), unpackHalf2x16(tr.y).x);
     vec3 other = twoSided ? unpackRgb9e5(tr.y) : vec3(0.0);
 #else
+    vec3 albedo = voxelAlbedo(slot);
     float s = grid.originSize.w;
     // Start off the surface (two voxels: vxgi::bounceCones) so the cones do not gather the voxel itself.
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;

@@ -44,6 +44,7 @@ DVSGI_CONST(uint, BIND_BOUNCE_SIDES, 10);  // per-slot side light (lib/voxel_sid
 // (x = rg, y = b), a two-sided voxel's favoured side's then its other side's
 // as RGB9E5. Written by the ray pass, read by the shading pass after it.
 DVSGI_CONST(uint, BIND_BOUNCE_TRACED, 11);
+DVSGI_CONST(uint, BOUNCE_RAYS_SLOT_BYTES, 8);  // its texel
 DVSGI_CONST(uint, BIND_BOUNCE_INDEX, 12);  // the slot index (voxel_data.h), read by the ray pass
 
 // The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "shared/bounce_pass.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
 
@@ -26,7 +27,7 @@ constexpr uint64_t kVisibilityBytes = 2;    // R16F light visibility
 constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specular
 constexpr uint64_t kOutputBytes = 16;       // RGBA32F
 constexpr uint64_t kHistoryBytes = 16 + 8;  // temporal history: RGBA32F sum, RGBA16F normal + depth
-constexpr uint64_t kRayResultBytes = 8;     // the bounce's rays' light per slot: RG32UI
+constexpr uint64_t kRayResultBytes = sh::BOUNCE_RAYS_SLOT_BYTES;  // the bounce's rays' light per slot
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 

@@ -565,6 +565,8 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b) {
            (a.voxels == 0 && (b.shadowCones.enabled || b.view.mode != ViewMode::Final));
 }
 
+bool Renderer::bounceRays() const { return bounceTracesRays(settings_); }
+
 bool Renderer::applySettings(const RenderSettings& s) {
     if (needsNewRenderer(settings_, s)) return false;
     const vxgi::VoxelLightSettings& o = settings_.voxelLight;

@@ -150,8 +150,8 @@ public:
     const ShadowPass& shadows() const { return *shadows_; }
     // The voxel volumes (with --clipmap, level 0's, the finest).
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
-    // Whether the voxel bounce marches rays (--bounce-trace rays on a fitted grid; clipmap levels trace cones).
-    bool bounceRays() const { return settings_.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && clip_.empty(); }
+    // Whether the voxel bounce marches rays (bounceTracesRays).
+    bool bounceRays() const;
     // The voxel data per grid voxel (VoxelVolumes::bytesPerGridVoxel, with the rays' results when they run).
     double voxelBytesPerGridVoxel() const { return volumes_->bytesPerGridVoxel(bounceRays()); }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
@@ -317,6 +317,12 @@ public:
 // True when going from `a` to `b` changes an image, a buffer, a pipeline or
 // the grid (sizes, voxels, shadow map, trace scale, emitter patches, camera).
 bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b);
+
+// Whether the voxel bounce marches rays: --bounce-trace rays on a fitted grid
+// (clipmap levels trace cones).
+inline bool bounceTracesRays(const RenderSettings& s) {
+    return s.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && s.clipmap.levels == 0;
+}
 
 // Camera matrices for an image of the given size (Vulkan clip space, Y flipped
 // so row 0 is the top of the image).

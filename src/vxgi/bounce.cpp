@@ -44,6 +44,8 @@ gpu::ImageDesc historyImageDesc(uint32_t slots) {
     return d;
 }
 
+static_assert(sh::BOUNCE_RAYS_SLOT_BYTES == 2 * sizeof(uint32_t), "tracedImageDesc's texel is RG32UI");
+
 gpu::ImageDesc tracedImageDesc(uint32_t slots) {
     gpu::ImageDesc d = historyImageDesc(slots);
     d.format = VK_FORMAT_R32G32_UINT;

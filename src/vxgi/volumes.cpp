@@ -9,6 +9,7 @@
 #include "gpu/tracker.h"
 #include "gpu/transfer.h"
 #include "shared/voxel_data.h"
+#include "shared/bounce_pass.h"
 #include "shared/voxel_list_pass.h"
 #include "vxgi/voxel_list.h"
 
@@ -79,7 +80,8 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRa
         {"occupied-voxel list", "uint32 buffer", voxelListBytes(slots)},
     };
     // BouncePass's (tracedImageDesc), per slot like the above.
-    if (bounceRays) items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * 8});
+    if (bounceRays)
+        items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * sh::BOUNCE_RAYS_SLOT_BYTES});
     return items;
 }
 
