@@ -357,7 +357,7 @@ std::vector<Setting> imageAndVoxels() {
                      kAll, kFrame},
                     {{"cones", vxgi::BounceTrace::Cones}, {"rays", vxgi::BounceTrace::Rays}},
                     FIELD(settings.voxelLight.bounceTrace)),
-             "rays", "cones or rays"),
+             "cones", "cones or rays"),
         with(integer({"bounce-rays", kVoxelLight, "R", "",
                       "--bounce-trace rays: rays per voxel over its cosine-weighted hemisphere, the same every "
                       "bounce and frame (a two-sided voxel's other side gets R/4, at least 4)",

@@ -64,7 +64,7 @@ uint32_t roundSlotCapacity(uint32_t n, uint64_t wanted) {
     return uint32_t(slots);
 }
 
-uint32_t defaultSlotCapacity(uint32_t n) { return roundSlotCapacity(n, 16ull * n * n); }
+uint32_t defaultSlotCapacity(uint32_t n) { return roundSlotCapacity(n, 12ull * n * n); }
 
 std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRays) {
     const uint64_t n3 = uint64_t(n) * n * n;

@@ -56,10 +56,12 @@ uint32_t directionalMipCount(uint32_t n);  // (N/2)^3 down to 1^3
 // The shader's view of a grid (shader::VoxelGrid).
 shader::VoxelGrid gpuVoxelGrid(const GridSpec& g, uint32_t slots, const glm::ivec4& keep = glm::ivec4(0));
 
-// Slots (occupied voxels that can be stored) an N^3 grid starts with: 16 N^2
-// (a surface crosses about N^2 voxels per unit of area; measured occupancy is
-// 3-11 % of N^3 at 32^3-128^3), whole rows, at most N^3. The renderer grows the
-// storage when a voxelization runs out (Renderer::renderFrame).
+// Slots (occupied voxels that can be stored) an N^3 grid starts with: 12 N^2
+// (a surface crosses about N^2 voxels per unit of area; the bench's
+// occupied_voxels: Cornell 4.9 N^2 at 64^3-128^3, Sponza 4.2, 5.9, 7.5 and
+// 8.9 N^2 at 64^3-512^3), whole rows, at most N^3. The renderer grows the
+// storage when a voxelization runs out (Renderer::renderFrame), so the figure
+// only decides how often a scene pays one more voxelization to grow.
 uint32_t defaultSlotCapacity(uint32_t n);
 // `wanted` rounded up to whole rows of VOXEL_SLOT_ROW, at most N^3 rounded up.
 uint32_t roundSlotCapacity(uint32_t n, uint64_t wanted);
