@@ -350,10 +350,10 @@ std::vector<Setting> imageAndVoxels() {
                     0.05, 4, FIELD(settings.voxelLight.bounceStepFactor)),
              "0.5", "a step factor beta in 0.05..4"),
         with(choice({"bounce-trace", kVoxelLight, "cones|rays", "",
-                     "how the voxel bounce gathers each voxel's light: cones = the paper's six cones through the "
-                     "filtered directional volumes; rays = --bounce-rays rays per voxel marched voxel by voxel "
-                     "through the radiance volume, so no wall lets light through and a closed room keeps all "
-                     "of it (a fitted grid's; --clipmap levels always trace cones)",
+                     "how the voxel bounce gathers each voxel's light: rays = --bounce-rays rays per voxel "
+                     "marched voxel by voxel through the radiance volume, so no wall lets light through and a "
+                     "closed room keeps all of it (a fitted grid's; --clipmap levels always trace cones); "
+                     "cones = the paper's six cones through the filtered directional volumes",
                      kAll, kFrame},
                     {{"cones", vxgi::BounceTrace::Cones}, {"rays", vxgi::BounceTrace::Rays}},
                     FIELD(settings.voxelLight.bounceTrace)),

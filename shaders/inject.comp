@@ -106,7 +106,10 @@ void main() {
     }
     imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, sideCodeAlpha(code)));
     vec3 shown = code == SIDE_ONE ? radiance : (axis >= 0 ? min(side[0], side[1]) : vec3(0.0));
-    imageStore(outRadiance, v, vec4(shown, twoSidedOpacity(code)));
+    // Static voxels keep the direct + reflected light the last bounce left for
+    // a feedback frame's rays; the bounce then writes this frame's. Dynamic
+    // ones were cleared, and show where they are now.
+    if (pc.keep.x == 0u || entry >= list.header.counts.y) imageStore(outRadiance, v, vec4(shown, twoSidedOpacity(code)));
     if (axis < 0) return;
     // The reflected light stays for a feedback frame's bounce to blend with;
     // otherwise the bounces start from none.

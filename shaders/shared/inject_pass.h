@@ -14,8 +14,11 @@ struct VoxelLightPush {
     vec4 params;   // x soft-shadow kappa, y shadow-map normal offset (texels), z 1 = add emission to the
                    // radiance (0 when emitters are area lights), w 1 = keep the side light's reflected part
                    // (a feedback frame's bounce blends with it)
+    uvec4 keep;    // x 1 = leave the static voxels' radiance as the last bounce wrote it (a feedback
+                   // frame's rays read the light of the frame before, as its cones read the filtered
+                   // volumes); yzw unused
 };
-DVSGI_CHECK_SIZE(VoxelLightPush, 32);
+DVSGI_CHECK_SIZE(VoxelLightPush, 48);
 
 DVSGI_CONST(uint, BIND_INJECT_GRID, 0);
 DVSGI_CONST(uint, BIND_INJECT_ACCUM, 1);

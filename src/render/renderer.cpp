@@ -308,6 +308,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     const bool feedback = feedbackFrame();
     const bool blend = blendsVoxelRadiance();
     light.keepSideReflection = feedback;
+    light.keepStaticRadiance = feedback && staticLightKept_ && bounceRays() && !pv_ && clip_.empty();
     const std::optional<vxgi::ClipTrace> trace = bounceTrace();
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {
@@ -318,6 +319,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
 
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
+    staticLightKept_ = false;
     for (size_t l = 0; l < clip_.size(); ++l) recordClipmapStatic(cmd, l, clip_[l].windowMin);
     if (!clip_.empty()) return;
     // Clears every voxel, dynamic ones included: the list restarts empty.
@@ -501,6 +503,7 @@ FrameStats Renderer::renderFrame() {
     if (converge) historyHold_ = 0;  // the light has settled: nothing to hold back
     staticDirty_ = false;
     haveHistory_ = voxelizer_ != nullptr;
+    staticLightKept_ = voxelizer_ != nullptr;
     stats.gbufferTriangles = gbufferTriangles_;
     stats.shadowTriangles = shadows_->drawnTriangles();
     for (const gpu::TimerResult& r : timers_->results()) {

@@ -287,6 +287,9 @@ private:
     bool shadowsStale_ = false;  // the next frame's shadows: StaticShadows::Uncached (after revoxelizeStatic)
     std::optional<scene::CameraPath> cameraPath_;
     bool haveHistory_ = false;  // the directional volumes hold an earlier frame's filtered radiance
+    // The static voxels' radiance holds the light an earlier frame's bounce
+    // left there (none re-voxelized since): a feedback frame's rays read it.
+    bool staticLightKept_ = false;
     // --voxel-temporal-alpha: per level, the light each slot reflected after
     // the last blending frame (vxgi::VoxelHistory); frame tags count up from
     // 1, lastHistoryTag_ is 0 when nothing may be blended with, and

@@ -37,6 +37,7 @@ struct VoxelLightSettings {
     float shadowNormalOffset = 1.5f;      // texels
     bool emissionInRadiance = true;       // the Renderer sets it: false when emitters are lit as area lights
     bool keepSideReflection = false;      // the Renderer sets it: true on feedback frames (shared/inject_pass.h)
+    bool keepStaticRadiance = false;      // the Renderer sets it: a feedback frame's rays read last frame's light
     BounceMode bounceMode = BounceMode::Converge;
     uint32_t bounces = 1;                 // Fixed: bounces per frame (0 = direct only)
     float convergence = 0.005f;           // Converge: stop when sum|dY| / sum Y over voxels is below this
