@@ -380,7 +380,7 @@ INSTANTIATE_TEST_SUITE_P(Converge, SwitchedOff, ::testing::Values(1.0f, 0.25f),
 // static voxels' radiance, which the voxel light pass leaves as the bounce
 // wrote it). Rays that read the radiance as the voxel light pass rewrites it,
 // direct light only, held one bounce from the second frame on: the walls fell
-// to 0.70 of the converged light here.
+// 18.7 % below the converged light here (measured 0.07 % now).
 TEST_F(Converge, FeedbackFramesKeepTheConvergedLight) {
     scene::Scene s = emissiveBox(0.5f, 0.0f);
     scene::Light light;
