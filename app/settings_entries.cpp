@@ -352,7 +352,7 @@ std::vector<Setting> imageAndVoxels() {
         with(choice({"bounce-trace", kVoxelLight, "cones|rays", "",
                      "how the voxel bounce gathers each voxel's light: rays = --bounce-rays rays per voxel "
                      "marched voxel by voxel through the radiance volume, so no wall lets light through and a "
-                     "closed room keeps all of it (a fitted grid's; --clipmap levels always trace cones); "
+                     "closed room keeps all of it (a fitted grid's; --clipmap levels and --voxelizer pv trace cones); "
                      "cones = the paper's six cones through the filtered directional volumes",
                      kAll, kFrame},
                     {{"cones", vxgi::BounceTrace::Cones}, {"rays", vxgi::BounceTrace::Rays}},

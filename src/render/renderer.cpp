@@ -308,7 +308,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     const bool feedback = feedbackFrame();
     const bool blend = blendsVoxelRadiance();
     light.keepSideReflection = feedback;
-    light.keepStaticRadiance = feedback && staticLightKept_ && bounceRays() && !pv_ && clip_.empty();
+    light.keepStaticRadiance = feedback && staticLightKept_ && bounceRays();
     const std::optional<vxgi::ClipTrace> trace = bounceTrace();
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {
@@ -417,7 +417,12 @@ void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimer
 
 bool Renderer::feedbackFrame() const {
     const vxgi::BounceMode m = settings_.voxelLight.bounceMode;
-    return m == vxgi::BounceMode::Feedback || (m == vxgi::BounceMode::Converge && haveHistory_);
+    if (m == vxgi::BounceMode::Feedback) return true;
+    // A feedback frame's rays read the light the static voxels kept from the
+    // frame before; after a static re-voxelization they have none, and a
+    // converging render converges again rather than start over from one bounce.
+    const bool staticLightLost = bounceRays() && (staticDirty_ || !staticLightKept_);
+    return m == vxgi::BounceMode::Converge && haveHistory_ && !staticLightLost;
 }
 
 double Renderer::bounceChange() const {

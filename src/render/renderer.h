@@ -322,9 +322,12 @@ public:
 bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b);
 
 // Whether the voxel bounce marches rays: --bounce-trace rays on a fitted grid
-// (clipmap levels trace cones).
+// voxelized whole (clipmap levels and progressive voxelization trace cones:
+// their feedback frames have no static voxels whose last light the rays
+// could read, Renderer::recordVoxels).
 inline bool bounceTracesRays(const RenderSettings& s) {
-    return s.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && s.clipmap.levels == 0;
+    return s.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && s.clipmap.levels == 0 &&
+           s.voxelizer != vxgi::VoxelizerKind::Pv;
 }
 
 // Camera matrices for an image of the given size (Vulkan clip space, Y flipped

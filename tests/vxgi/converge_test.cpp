@@ -405,6 +405,18 @@ TEST_F(Converge, FeedbackFramesKeepTheConvergedLight) {
     std::printf("  walls converged %.5f (direct %.5f); four feedback frames after it: at most %.3f %% off\n", converged,
                 direct, 100.0 * worst);
     EXPECT_LT(worst, 0.005);
+    // A static re-voxelization (static geometry moved, or asked for) leaves
+    // the rays no last light to read: the frame after it converges again.
+    r.markStaticDirty();
+    const render::FrameStats again = r.renderFrame();
+    const double revoxelized = wallMean(readRgba16(r.volumes()->radiance));
+    r.revoxelizeStatic();
+    r.renderFrame();
+    const double revoxelizedApart = wallMean(readRgba16(r.volumes()->radiance));
+    std::printf("  after a static re-voxelization in the frame: %.5f (%u bounces); done before the frame: %.5f\n",
+                revoxelized, again.bounces, revoxelizedApart);
+    EXPECT_NEAR(revoxelized / converged, 1.0, 0.005);
+    EXPECT_NEAR(revoxelizedApart / converged, 1.0, 0.005);
 }
 
 // Under feedback a moved object's light must not linger where it was: a small
