@@ -8,7 +8,9 @@ GI multiplies a per-bounce error several times over (white walls keep about
 error shows first. Scenes: cornell-lights.gltf (64^2, 64^3) and a lit corner
 (floor and wall, scripts/corner-scene.py), whose traced direct light must also match
 dvsgi's, which checks the tracer.
-Usage: bounce_reference.py path/to/dvsgi path/to/shared path/to/scripts/bounce-reference.py"""
+Usage: bounce_reference.py path/to/dvsgi path/to/shared path/to/scripts/bounce-reference.py
+To look further (the bounds are for the defaults): DVSGI_BOUNCE_VOXELS=N renders at N^3 instead of
+64^3, DVSGI_BOUNCE_OPTIONS="..." adds dvsgi options to every render."""
 import os
 import subprocess
 import sys
@@ -25,7 +27,9 @@ for needed in (cornell, os.path.join(shared, "tools/compare.py")):
 sys.path.insert(0, os.path.join(shared, "tools"))
 import compare  # noqa: E402  (the project's metrics and EXR reader, ../shared/tools)
 LUM = np.array([0.2126, 0.7152, 0.0722])
-SIZE, VOXELS, SPP = 64, 64, 128
+SIZE, SPP = 64, 128
+VOXELS = int(os.environ.get("DVSGI_BOUNCE_VOXELS", "64"))
+EXTRA = os.environ.get("DVSGI_BOUNCE_OPTIONS", "").split()
 tmp = tempfile.mkdtemp(prefix="dvsgi-bounce-")
 failures = []
 
@@ -33,7 +37,7 @@ failures = []
 def render(scene, name, *options, voxels=VOXELS):
     out = os.path.join(tmp, name + ".exr")
     subprocess.run([dvsgi, "render", scene, "--width", str(SIZE), "--height", str(SIZE), "--voxels", str(voxels),
-                    "--trace-scale", "1", "--out", out, "--png", "none", "--validate", "--quiet", *options],
+                    "--trace-scale", "1", "--out", out, "--png", "none", "--validate", "--quiet", *options, *EXTRA],
                    check=True, timeout=300)
     return float((compare.read_rgb(out) @ LUM).mean())
 
