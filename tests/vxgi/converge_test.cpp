@@ -63,6 +63,17 @@ Rgba16Volume radianceAfterOneBounce(const scene::Scene& s,
     return readRgba16(r.volumes()->radiance);
 }
 
+// The closed box of albedo 0.5 lit by a point light of 1 W/sr under its ceiling.
+scene::Scene lampLitBox() {
+    scene::Scene s = emissiveBox(0.5f, 0.0f);
+    scene::Light light;
+    light.name = "lamp";
+    light.type = scene::LightType::Point;
+    light.intensity = 1.0f;
+    addLight(s, light, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, -1, 0));
+    return s;
+}
+
 // The open box of albedo 0.5 with a small dynamic emitter facing the floor
 // at x = lampX (the node index of the emitter second).
 std::pair<scene::Scene, int> lampBox(float lampX) {
@@ -336,13 +347,7 @@ TEST_F(Converge, OpenBoxLetsLightEscapeWithRays) {
 class SwitchedOff : public GpuTest, public ::testing::WithParamInterface<float> {};
 
 TEST_P(SwitchedOff, LightLeavesNoIndirectLightUnderFeedback) {
-    constexpr float kRho = 0.5f;
-    scene::Scene s = emissiveBox(kRho, 0.0f);
-    scene::Light light;
-    light.name = "lamp";
-    light.type = scene::LightType::Point;
-    light.intensity = 1.0f;
-    addLight(s, light, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, -1, 0));
+    scene::Scene s = lampLitBox();
     render::RenderSettings rs = boxSettings();
     const bool blended = GetParam() < 1.0f;
     rs.voxelLight.bounceMode = blended ? vxgi::BounceMode::Converge : vxgi::BounceMode::Feedback;
@@ -382,12 +387,7 @@ INSTANTIATE_TEST_SUITE_P(Converge, SwitchedOff, ::testing::Values(1.0f, 0.25f),
 // direct light only, held one bounce from the second frame on: the walls fell
 // 18.7 % below the converged light here (measured 0.07 % now).
 TEST_F(Converge, FeedbackFramesKeepTheConvergedLight) {
-    scene::Scene s = emissiveBox(0.5f, 0.0f);
-    scene::Light light;
-    light.name = "lamp";
-    light.type = scene::LightType::Point;
-    light.intensity = 1.0f;
-    addLight(s, light, glm::vec3(0.0f, 0.5f, 0.0f), glm::vec3(0, -1, 0));
+    const scene::Scene s = lampLitBox();
     render::RenderSettings rs = boxSettings();
     rs.voxelLight.convergence = 0.002f;
     rs.voxelLight.maxBounces = 200;
