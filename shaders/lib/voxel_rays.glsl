@@ -46,9 +46,31 @@ bool onOwnSurface(ivec3 c, vec3 self, vec3 n) {
     return slot != 0u && dot(voxelNormal(slot - 1u), n) > 0.8;
 }
 
+const float RAY_PLANE_AXIS_COS = 0.98;
+
+// Whether a ray from p along d (1/d = inv), at p + d t inside occupied voxel
+// c, leaves c before it reaches the plane through c's centre across c's normal:
+// it passes in front of the surface there. Taking every voxel it entered as a
+// hit made a surface look up to a voxel thicker toward the ray, so near
+// surfaces looked larger than they are and coarse grids came out bright
+// (docs/quality.md). Only for normals within about 11 degrees of an axis (a
+// floor, a wall): the mean normal of an edge or a corner where walls meet,
+// or of a tilted surface's staircase, is no plane the voxel holds, and rays
+// passed the corners of a closed box there. A voxel whose opposite faces
+// cancel has no normal.
+bool passesInFront(ivec3 c, vec3 p, vec3 d, vec3 inv, float t) {
+    uint slot = voxelSlotAt(c);
+    vec3 nc = slot != 0u ? voxelNormal(slot - 1u) : vec3(0.0);
+    vec3 m = abs(nc);
+    if (max(m.x, max(m.y, m.z)) < RAY_PLANE_AXIS_COS) return false;
+    float ahead = dot(vec3(c) + 0.5 - (p + d * t), nc), along = dot(d, nc);
+    if (ahead * along <= 0.0) return false;  // on the plane's far side, or not moving toward it
+    return t + ahead / along > exitDistance(p, inv, vec3(c), 1.0);
+}
+
 // Radiance met by a ray from voxel-space point p along unit d: the first
-// occupied voxel not on the surface of `self` (centre, normal n), or nothing
-// where it leaves the grid. Empty space is crossed a whole cell at a time,
+// occupied voxel not on the surface of `self` (centre, normal n) that it does
+// not pass in front of, or nothing where it leaves the grid. Empty space is crossed a whole cell at a time,
 // sixteen voxels, eight, four or two, wherever the directional volumes' mips
 // show the cell empty. A ray that starts inside another surface's voxel
 // meets that surface's back at no distance: no light (a floor under a box
@@ -73,7 +95,8 @@ vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
             size = 2.0;
         } else {
             vec4 r = imageLoad(outRadiance, c);
-            if (r.a > 0.0 && !onOwnSurface(c, self, n)) return i == 0 ? vec3(0.0) : radianceSeen(c, r, d);
+            if (r.a > 0.0 && !onOwnSurface(c, self, n) && (i == 0 || !passesInFront(c, p, d, inv, t)))
+                return i == 0 ? vec3(0.0) : radianceSeen(c, r, d);
         }
         // Just past the cell's exit (1e-3 voxel), into the next one.
         t = exitDistance(p, inv, floor(vec3(c) / size) * size, size) + 1e-3;
