@@ -5,15 +5,13 @@
 // `grid`, the radiance volume `outRadiance` (read only in that pass), the
 // side light `sides` and lib/voxel_index.glsl.
 
-// What a ray travelling along d sees of occupied voxel c whose radiance
-// texel is r: a two-sided voxel (lib/voxel_sides.glsl) shows the side it
+// What a ray travelling along d sees of the occupied voxel in `slot` (+ 1, as
+// the index holds it) whose radiance texel is r: a two-sided voxel (lib/voxel_sides.glsl) shows the side it
 // meets (direct + reflected), others their radiance.
-vec3 radianceSeen(ivec3 c, vec4 r, vec3 d) {
+vec3 radianceSeen(uint slot, vec4 r, vec3 d) {
     uint code = sideCodeOfOpacity(r.a);
     int axis = twoSidedAxis(code);
-    if (axis < 0) return r.rgb;
-    uint slot = voxelSlotAt(c);
-    if (slot == 0u) return r.rgb;
+    if (axis < 0 || slot == 0u) return r.rgb;
     uvec4 t = imageLoad(sides, slotTexel(slot - 1u, 0u));
     // Travelling toward -axis a ray meets the +axis side (x, z).
     bool plusSide = d[axis] < 0.0;
@@ -36,20 +34,18 @@ float exitDistance(vec3 p, vec3 inv, vec3 lo, float size) {
     return min(t.x, min(t.y, t.z));
 }
 
-// Whether occupied voxel c belongs to the surface a ray leaving voxel
+// Whether occupied voxel c (normal nc) belongs to the surface a ray leaving voxel
 // `self` (centre, normal n) starts on: within a voxel and a half of its
 // plane and facing the same way. A surface voxelizes into one or two layers;
 // rays start one voxel off, which is the second layer's when there is one.
-bool onOwnSurface(ivec3 c, vec3 self, vec3 n) {
-    if (abs(dot(vec3(c) + 0.5 - self, n)) >= 1.5) return false;
-    uint slot = voxelSlotAt(c);
-    return slot != 0u && dot(voxelNormal(slot - 1u), n) > 0.8;
+bool onOwnSurface(ivec3 c, vec3 nc, vec3 self, vec3 n) {
+    return abs(dot(vec3(c) + 0.5 - self, n)) < 1.5 && dot(nc, n) > 0.8;
 }
 
 const float RAY_PLANE_AXIS_COS = 0.98;
 
 // Whether a ray from p along d (1/d = inv), at p + d t inside occupied voxel
-// c, leaves c before it reaches the plane through c's centre across c's normal:
+// c (normal nc), leaves c before it reaches the plane through c's centre across c's normal:
 // it passes in front of the surface there. Taking every voxel it entered as a
 // hit made a surface look up to a voxel thicker toward the ray, so near
 // surfaces looked larger than they are and coarse grids came out bright
@@ -58,9 +54,7 @@ const float RAY_PLANE_AXIS_COS = 0.98;
 // or of a tilted surface's staircase, is no plane the voxel holds, and rays
 // passed the corners of a closed box there. A voxel whose opposite faces
 // cancel has no normal.
-bool passesInFront(ivec3 c, vec3 p, vec3 d, vec3 inv, float t) {
-    uint slot = voxelSlotAt(c);
-    vec3 nc = slot != 0u ? voxelNormal(slot - 1u) : vec3(0.0);
+bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
     vec3 m = abs(nc);
     if (max(m.x, max(m.y, m.z)) < RAY_PLANE_AXIS_COS) return false;
     float ahead = dot(vec3(c) + 0.5 - (p + d * t), nc), along = dot(d, nc);
@@ -70,11 +64,11 @@ bool passesInFront(ivec3 c, vec3 p, vec3 d, vec3 inv, float t) {
 
 // Radiance met by a ray from voxel-space point p along unit d: the first
 // occupied voxel not on the surface of `self` (centre, normal n) that it does
-// not pass in front of, or nothing where it leaves the grid. Empty space is crossed a whole cell at a time,
-// sixteen voxels, eight, four or two, wherever the directional volumes' mips
-// show the cell empty. A ray that starts inside another surface's voxel
-// meets that surface's back at no distance: no light (a floor under a box
-// standing on it). Taking that voxel's radiance instead made two surfaces a voxel apart
+// not pass in front of, or nothing where it leaves the grid. Empty space is
+// crossed a whole cell at a time, sixteen voxels, eight, four or two,
+// wherever the directional volumes' mips show the cell empty. A ray that
+// starts inside another surface's voxel meets that surface's back at no
+// distance: no light (a floor under a box standing on it). Taking that voxel's radiance instead made two surfaces a voxel apart
 // light each other without loss: with albedo 1 (the Cornell box's white) the
 // light between them never converged.
 vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
@@ -95,8 +89,13 @@ vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
             size = 2.0;
         } else {
             vec4 r = imageLoad(outRadiance, c);
-            if (r.a > 0.0 && !onOwnSurface(c, self, n) && (i == 0 || !passesInFront(c, p, d, inv, t)))
-                return i == 0 ? vec3(0.0) : radianceSeen(c, r, d);
+            if (r.a > 0.0) {
+                // Its slot and normal, read once for the rules below.
+                uint slot = voxelSlotAt(c);
+                vec3 nc = slot != 0u ? voxelNormal(slot - 1u) : vec3(0.0);
+                if (!onOwnSurface(c, nc, self, n) && (i == 0 || !passesInFront(c, nc, p, d, inv, t)))
+                    return i == 0 ? vec3(0.0) : radianceSeen(slot, r, d);
+            }
         }
         // Just past the cell's exit (1e-3 voxel), into the next one.
         t = exitDistance(p, inv, floor(vec3(c) / size) * size, size) + 1e-3;
