@@ -17,6 +17,8 @@
 // each voxel's rays through the radiance volume (lib/voxel_rays.glsl), their
 // light kept per slot; built with TRACED, the second: as below, with that
 // light instead of the cones'.
+// Built with RAY_NORMALS, the dispatch before the rays: each voxel's mean
+// normal, packed per slot for the rays to read.
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
@@ -40,7 +42,10 @@ VOXEL_LIST_BLOCK(BIND_BOUNCE_LIST, readonly);
 #if defined(DVSGI_RAY_TRACE) || defined(DVSGI_TRACED)
 layout(set = 0, binding = BIND_BOUNCE_TRACED, rg32ui) uniform uimage3D traced;
 #endif
-#ifdef DVSGI_RAY_TRACE
+#if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
+layout(set = 0, binding = BIND_BOUNCE_RAY_NORMALS, r32ui) uniform uimage3D rayNormals;
+#endif
+#if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
 VOXEL_INDEX_BLOCK(BIND_BOUNCE_INDEX, readonly);
 #endif
 layout(push_constant) uniform Push { BouncePush pc; };
@@ -51,7 +56,7 @@ layout(push_constant) uniform Push { BouncePush pc; };
 #include "lib/voxel_window.glsl"
 #include "lib/cone_trace.glsl"
 #include "lib/voxel_list_dispatch.glsl"
-#ifdef DVSGI_RAY_TRACE
+#if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
 #include "lib/voxel_index.glsl"
 #include "lib/voxel_rays.glsl"
 #endif
@@ -110,7 +115,13 @@ vec3 bounceNormal(uint slot, uint code, out int axis, out int strong) {
     return n;
 }
 
-#ifdef DVSGI_RAY_TRACE
+#ifdef DVSGI_RAY_NORMALS
+void main() {
+    uint entry = listInvocation();
+    if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
+    imageStore(rayNormals, slotTexel(entry, 0u), uvec4(packRayNormal(voxelNormal(entry)), 0u, 0u, 0u));
+}
+#elif defined(DVSGI_RAY_TRACE)
 // Rays start a voxel off the voxel's centre (docs/quality.md: from two off,
 // as the cones start, they missed what stands beside the surface).
 #ifndef RAY_OFFSET
@@ -127,8 +138,10 @@ void main() {
     // The same rays every bounce and frame: a static scene converges to one
     // light, with no noise from frame to frame.
     uint seed = raySeed(v);
-    vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed);
-    vec3 other = axis >= 0 ? albedo * voxelRaysCosine(v, -n, RAY_OFFSET, max(pc.flags.w / 4u, 4u), rayHash(seed)) : vec3(0.0);
+    vec3 other;
+    vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed,
+                                              axis >= 0 ? max(pc.flags.w / 4u, 4u) : 0u, rayHash(seed), other);
+    other *= albedo;
     // A one-sided voxel's light as half floats: in RGB9E5 a bounce's increment
     // fell under the step in a bright closed room and the series stalled 1 %
     // short. A two-sided voxel's two sides as RGB9E5, as its side light keeps them.

@@ -3,7 +3,19 @@
 // crosses, Amanatides & Woo) and takes the radiance of the first occupied
 // one, so a wall one voxel thick stops it however it meets the wall. Needs
 // `grid`, the radiance volume `outRadiance` (read only in that pass), the
-// side light `sides` and lib/voxel_index.glsl.
+// side light `sides`, the packed normals `rayNormals` and lib/voxel_index.glsl.
+
+// A normal as the rays keep it per slot (BIND_BOUNCE_RAY_NORMALS): each
+// axis rounded to steps of 1/RAY_NORMAL_SCALE, offset to be unsigned.
+uint packRayNormal(vec3 n) {
+    uvec3 q = uvec3(floor(clamp(n, -1.0, 1.0) * RAY_NORMAL_SCALE + 0.5) + RAY_NORMAL_SCALE + 1.0);
+    return q.x | q.y << RAY_NORMAL_BITS | q.z << (2u * RAY_NORMAL_BITS);
+}
+
+vec3 unpackRayNormal(uint word) {
+    uvec3 q = (uvec3(word) >> uvec3(0u, RAY_NORMAL_BITS, 2u * RAY_NORMAL_BITS)) & ((1u << RAY_NORMAL_BITS) - 1u);
+    return (vec3(q) - (RAY_NORMAL_SCALE + 1.0)) / RAY_NORMAL_SCALE;
+}
 
 // What a ray travelling along d sees of the occupied voxel in `slot` (+ 1, as
 // the index holds it) whose radiance texel is r: a two-sided voxel (lib/voxel_sides.glsl) shows the side it
@@ -62,63 +74,95 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
     return t + ahead / along > exitDistance(p, inv, vec3(c), 1.0);
 }
 
-// Radiance met by a ray from voxel-space point p along unit d: the first
-// occupied voxel not on the surface of `self` (centre, normal n) that it does
-// not pass in front of, or nothing where it leaves the grid. Empty space is
-// crossed a whole cell at a time, sixteen voxels, eight, four or two,
-// wherever the directional volumes' mips show the cell empty. A ray that
-// starts inside another surface's voxel meets that surface's back at no
-// distance: no light (a floor under a box standing on it). Taking that voxel's radiance instead made two surfaces a voxel apart
-// light each other without loss: with albedo 1 (the Cornell box's white) the
-// light between them never converged.
-vec3 voxelRay(vec3 p, vec3 d, vec3 self, vec3 n, int N) {
-    vec3 inv = 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7)));
-    float t = 0.0;
-    for (int i = 0; i < 4 * N; ++i) {
-        vec3 q = p + d * t;
-        ivec3 c = ivec3(floor(q));
-        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) break;
-        float size = 1.0;
-        if (cellEmpty(c >> 4, 3)) {
-            size = 16.0;
-        } else if (cellEmpty(c >> 3, 2)) {
-            size = 8.0;
-        } else if (cellEmpty(c >> 2, 1)) {
-            size = 4.0;
-        } else if (cellEmpty(c >> 1, 0)) {
-            size = 2.0;
-        } else {
-            vec4 r = imageLoad(outRadiance, c);
-            if (r.a > 0.0) {
-                // Its slot and normal, read once for the rules below.
-                uint slot = voxelSlotAt(c);
-                vec3 nc = slot != 0u ? voxelNormal(slot - 1u) : vec3(0.0);
-                if (!onOwnSurface(c, nc, self, n) && (i == 0 || !passesInFront(c, nc, p, d, inv, t)))
-                    return i == 0 ? vec3(0.0) : radianceSeen(slot, r, d);
+// One step of a ray from voxel-space point p along unit d (1/d = inv), at
+// parameter t, its i-th: whether the ray ends here, with what it met in
+// `seen`, or else t moved to the next cell. It ends at the first occupied
+// voxel not on the surface of `self` (centre, normal n) that it does not pass
+// in front of (that voxel's light), or where it leaves the grid (nothing).
+// Empty space is crossed a whole cell at a time, sixteen voxels, eight, four
+// or two, wherever the directional volumes' mips show the cell empty. A ray
+// that starts inside another surface's voxel meets that surface's back at no
+// distance: no light (a floor under a box standing on it). Taking that
+// voxel's radiance instead made two surfaces a voxel apart light each other
+// without loss: with albedo 1 (the Cornell box's white) the light between
+// them never converged.
+bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, int N, out vec3 seen) {
+    seen = vec3(0.0);
+    ivec3 c = ivec3(floor(p + d * t));
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return true;
+    float size = 1.0;
+    if (cellEmpty(c >> 4, 3)) {
+        size = 16.0;
+    } else if (cellEmpty(c >> 3, 2)) {
+        size = 8.0;
+    } else if (cellEmpty(c >> 2, 1)) {
+        size = 4.0;
+    } else if (cellEmpty(c >> 1, 0)) {
+        size = 2.0;
+    } else {
+        vec4 r = imageLoad(outRadiance, c);
+        if (r.a > 0.0) {
+            // Its slot and normal, read once for the rules below.
+            uint slot = voxelSlotAt(c);
+            vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+            if (!onOwnSurface(c, nc, self, n) && (i == 0 || !passesInFront(c, nc, p, d, inv, t))) {
+                if (i != 0) seen = radianceSeen(slot, r, d);
+                return true;
             }
         }
-        // Just past the cell's exit (1e-3 voxel), into the next one.
-        t = exitDistance(p, inv, floor(vec3(c) / size) * size, size) + 1e-3;
     }
-    return vec3(0.0);
+    // Just past the cell's exit (1e-3 voxel), into the next one.
+    t = exitDistance(p, inv, floor(vec3(c) / size) * size, size) + 1e-3;
+    return false;
 }
 
 // The mean radiance over `count` cosine-distributed rays about n from voxel
-// v, i.e. E / pi. The directions follow the R2 sequence (well spread over
-// the disk for any count), shifted by `seed` per voxel so that neighbours do
-// not share their gaps. The rays start `offset` voxels off v's centre along n.
-vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed) {
+// v, i.e. E / pi, and in `back` the same over `backCount` rays about -n
+// (seed `backSeed`; a two-sided voxel's other side, else 0 rays). The
+// directions follow the R2 sequence (well spread over the disk for any
+// count), shifted by the seed per voxel so that neighbours do not share their
+// gaps. The rays start `offset` voxels off v's centre along their side's
+// normal. One loop walks all of them, a ray starting as soon as the one
+// before ends: invocations run in lock-step (SIMD lanes on a CPU, a warp on a
+// GPU), and with a loop per ray every lane waited for its group's longest
+// ray, once per ray, where now it waits once for the longest walk over all
+// its rays.
+vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint backCount, uint backSeed,
+                     out vec3 back) {
     int N = int(grid.dims.x);
-    vec3 origin = vec3(v) + 0.5 + n * offset;
-    vec3 t = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
-    vec3 b = cross(n, t);
-    vec2 shift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
-    vec3 sum = vec3(0.0);
-    for (uint i = 0u; i < count; ++i) {
-        vec2 u = fract(shift + float(i) * vec2(RAY_R2_U, RAY_R2_V));
-        float rad = sqrt(u.x), phi = TWO_PI * u.y;
-        vec3 d = normalize(t * (rad * cos(phi)) + b * (rad * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
-        sum += voxelRay(origin, d, vec3(v) + 0.5, n, N);
+    vec3 self = vec3(v) + 0.5;
+    vec3 tx = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
+    vec3 b = cross(n, tx);
+    vec2 frontShift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
+    vec2 backShift = vec2(float(backSeed & 0xffffu), float(backSeed >> 16)) / 65536.0;
+    vec3 front = vec3(0.0), d = n, inv = vec3(1.0), side = n, origin = self;
+    back = vec3(0.0);
+    float t = 0.0;
+    int step = 0;
+    uint ray = 0u, total = count + backCount;
+    for (int k = 0; ray < total && k < int(total) * 4 * N; ++k) {
+        if (step == 0) {
+            // The back side's frame is the front's turned about b: (-tx, b, -n).
+            bool isBack = ray >= count;
+            float sign = isBack ? -1.0 : 1.0;
+            side = n * sign;
+            origin = self + side * offset;
+            vec2 u = fract((isBack ? backShift : frontShift) + float(isBack ? ray - count : ray) * vec2(RAY_R2_U, RAY_R2_V));
+            float rad = sqrt(u.x), phi = TWO_PI * u.y;
+            d = normalize(tx * (sign * rad * cos(phi)) + b * (rad * sin(phi)) + side * sqrt(max(1.0 - u.x, 0.0)));
+            inv = 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7)));
+            t = 0.0;
+        }
+        vec3 seen;
+        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, N, seen);
+        ++step;
+        if (ends || step >= 4 * N) {
+            if (ray < count) front += seen;
+            else back += seen;
+            ++ray;
+            step = 0;
+        }
     }
-    return sum / float(max(count, 1u));
+    back /= float(max(backCount, 1u));
+    return front / float(max(count, 1u));
 }

@@ -46,6 +46,15 @@ DVSGI_CONST(uint, BIND_BOUNCE_SIDES, 10);  // per-slot side light (lib/voxel_sid
 DVSGI_CONST(uint, BIND_BOUNCE_TRACED, 11);
 DVSGI_CONST(uint, BOUNCE_RAYS_SLOT_BYTES, 8);  // its texel
 DVSGI_CONST(uint, BIND_BOUNCE_INDEX, 12);  // the slot index (voxel_data.h), read by the ray pass
+// Rays: per slot, R32UI, the voxel's mean normal (lib/voxel_attributes.glsl's
+// voxelNormal) in RAY_NORMAL_BITS per axis, written by a dispatch before the
+// rays so that a ray meeting a voxel reads one word instead of its seven
+// attribute channels. Steps of 1/RAY_NORMAL_SCALE; a normal that cancelled
+// stays 0.
+DVSGI_CONST(uint, BIND_BOUNCE_RAY_NORMALS, 13);
+DVSGI_CONST(uint, BOUNCE_RAY_NORMAL_SLOT_BYTES, 4);  // its texel
+DVSGI_CONST(uint, RAY_NORMAL_BITS, 10);
+DVSGI_CONST(float, RAY_NORMAL_SCALE, 511.0);
 
 // The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU
 // march: the R2 sequence over the unit square, shifted per voxel by a hash.

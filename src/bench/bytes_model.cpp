@@ -28,6 +28,9 @@ constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specula
 constexpr uint64_t kOutputBytes = 16;       // RGBA32F
 constexpr uint64_t kHistoryBytes = 16 + 8;  // temporal history: RGBA32F sum, RGBA16F normal + depth
 constexpr uint64_t kRayResultBytes = sh::BOUNCE_RAYS_SLOT_BYTES;  // the bounce's rays' light per slot
+// The rays' normals: the fragment count and six normal weights in, one packed word per slot out.
+constexpr uint64_t kRayNormalAttributeBytes = 7 * 4;
+constexpr uint64_t kRayNormalBytes = sh::BOUNCE_RAY_NORMAL_SLOT_BYTES;
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 
@@ -92,14 +95,16 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         out.push_back(filtering(in.voxels, occupied, "voxel filtering"));
         // Cone and ray samples are not counted: the bytes are those of the
         // voxel's own attributes, direct light and result (with rays, also
-        // the list and attributes read again by the second dispatch and the
-        // per-slot result it hands over).
+        // the list and attributes read again by the shading dispatch, the
+        // per-slot result the rays hand over, and the dispatch before the
+        // rays that packs each voxel's normal).
         PassTraffic bounce{"voxel bounce",
                            bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kVoxelLightBytes),
                            bounces * occupied * kVoxelLightBytes};
         if (in.bounceRays) {
-            bounce.readBytes += bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kRayResultBytes);
-            bounce.writtenBytes += bounces * occupied * kRayResultBytes;
+            bounce.readBytes += bounces * occupied *
+                                (2 * kListEntryBytes + kBounceAttributeBytes + kRayResultBytes + kRayNormalAttributeBytes);
+            bounce.writtenBytes += bounces * occupied * (kRayResultBytes + kRayNormalBytes);
         }
         out.push_back(bounce);
         PassTraffic again = filtering(in.voxels, occupied, "voxel filtering (bounce)");

@@ -25,6 +25,9 @@ const uint32_t kBounce[] = {
 const uint32_t kBounceClipmap[] = {
 #include "shaders/bounce_clipmap.comp.inc"
 };
+const uint32_t kBounceRayNormals[] = {
+#include "shaders/bounce_ray_normals.comp.inc"
+};
 const uint32_t kBounceRayTrace[] = {
 #include "shaders/bounce_ray_trace.comp.inc"
 };
@@ -54,6 +57,18 @@ gpu::ImageDesc tracedImageDesc(uint32_t slots) {
     return d;
 }
 
+static_assert(sh::BOUNCE_RAY_NORMAL_SLOT_BYTES == sizeof(uint32_t), "rayNormalsImageDesc's texel is R32UI");
+static_assert(3 * sh::RAY_NORMAL_BITS <= 32 && sh::RAY_NORMAL_SCALE < float(1u << (sh::RAY_NORMAL_BITS - 1)),
+              "a packed ray normal's three axes fit one word");
+
+gpu::ImageDesc rayNormalsImageDesc(uint32_t slots) {
+    gpu::ImageDesc d = historyImageDesc(slots);
+    d.format = VK_FORMAT_R32_UINT;
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    d.name = "voxel bounce rays' normals";
+    return d;
+}
+
 BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
@@ -72,6 +87,8 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     gpu::LayoutDesc rays = layout;
     rays.bindings.push_back({sh::BIND_BOUNCE_TRACED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
     rays.bindings.push_back({sh::BIND_BOUNCE_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rays.bindings.push_back({sh::BIND_BOUNCE_RAY_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    rayNormalsPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayNormals), rays, "voxel bounce rays' normals");
     rayPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayTrace), rays, "voxel bounce rays");
     rayShadePipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceTraced), rays, "voxel bounce (rays' light)");
     if (clipmap) {
@@ -109,11 +126,14 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     const bool rays = rayCount > 0 && !clip;
     if (rays) {
         const gpu::ImageDesc want = tracedImageDesc(v.slots);
-        if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) traced_ = gpu::Image(ctx_, want);
+        if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) {
+            traced_ = gpu::Image(ctx_, want);
+            rayNormals_ = gpu::Image(ctx_, rayNormalsImageDesc(v.slots));
+        }
         tracker.buffer(v.index, gpu::use::BufferComputeRead);
         // The rays read the radiance and side light that the shading pass after them writes.
         tracker.image(v.radiance, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);
-        tracker.image(traced_, gpu::use::ComputeWrite);
+        tracker.image(traced_, gpu::use::ComputeWrite).image(rayNormals_, gpu::use::ComputeWrite);
     }
     tracker.flush(cmd);
     const gpu::Pipeline& pipeline = rays ? rayShadePipeline_ : (clip ? clipPipeline_ : pipeline_);
@@ -134,13 +154,21 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
         .storageImage(sh::BIND_BOUNCE_HISTORY, historyImage.view())
         .storageImage(sh::BIND_BOUNCE_SIDES, v.sides.view());
-    if (rays) d.storageImage(sh::BIND_BOUNCE_TRACED, traced_.view()).storageBuffer(sh::BIND_BOUNCE_INDEX, v.index.handle());
+    if (rays) {
+        d.storageImage(sh::BIND_BOUNCE_TRACED, traced_.view())
+            .storageBuffer(sh::BIND_BOUNCE_INDEX, v.index.handle())
+            .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rayNormals_.view());
+    }
     const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
                                                   std::bit_cast<uint32_t>(history->alpha), 0u)
                                      : glm::uvec4(0u);
     const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid),
                               glm::uvec4(stats ? 1u : 0u, level, 0u, rays ? rayCount : 0u), blend};
     if (rays) {
+        gpu::bind(cmd, rayNormalsPipeline_);
+        d.push(ctx_, cmd, rayNormalsPipeline_);
+        dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+        tracker.image(rayNormals_, gpu::use::ComputeRead).flush(cmd);
         gpu::bind(cmd, rayPipeline_);
         d.push(ctx_, cmd, rayPipeline_);
         gpu::pushConstants(cmd, rayPipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);

@@ -2,10 +2,12 @@
 // filtered directional volumes; radiance = direct + albedo / pi x irradiance.
 // Repeated with filtering in between, or once per frame from the previous
 // frame's volumes (feedback), it adds one bounce of light each time.
-// With rays (--bounce-trace rays, a fitted grid's) a first dispatch marches
-// each voxel's rays through the radiance volume, voxel by voxel, and keeps
-// what they gathered per slot; the second shades as the cones' pass does.
-// Two dispatches, because the rays read the radiance the shading writes.
+// With rays (--bounce-trace rays, a fitted grid's) a first dispatch packs
+// each voxel's normal per slot, a second marches each voxel's rays through
+// the radiance volume, voxel by voxel, reading those normals, and keeps what
+// they gathered per slot; the third shades as the cones' pass does. Three
+// dispatches, because the rays read normals of voxels other invocations
+// pack, and the radiance the shading writes.
 #pragma once
 
 #include "gpu/pipeline.h"
@@ -34,6 +36,8 @@ struct VoxelHistory {
 gpu::ImageDesc historyImageDesc(uint32_t slots);
 // The rays' light per slot (BIND_BOUNCE_TRACED in shared/bounce_pass.h): RG32UI.
 gpu::ImageDesc tracedImageDesc(uint32_t slots);
+// The voxels' packed normals per slot that the rays read (BIND_BOUNCE_RAY_NORMALS): R32UI.
+gpu::ImageDesc rayNormalsImageDesc(uint32_t slots);
 
 class BouncePass {
 public:
@@ -53,17 +57,18 @@ public:
                 const ClipTrace* clip = nullptr, uint32_t level = 0, const VoxelHistory* history = nullptr) const;
     static uint32_t statsFloats(uint32_t slots);
     // Bytes of the rays' per-slot results (0 until rays were traced).
-    VkDeviceSize rayBytes() const { return traced_.handle() ? traced_.memorySize() : 0; }
+    VkDeviceSize rayBytes() const { return traced_.handle() ? traced_.memorySize() + rayNormals_.memorySize() : 0; }
 
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_, clipPipeline_;
     gpu::Buffer noStats_;     // bound when no statistics are asked for (the binding must stay valid)
     gpu::Image noHistory_;    // bound when nothing is blended
-    gpu::Pipeline rayPipeline_, rayShadePipeline_;
-    // What the rays gathered, per slot (BIND_BOUNCE_TRACED): made at the first
-    // ray bounce and again when the slot capacity changes.
-    mutable gpu::Image traced_;
+    gpu::Pipeline rayNormalsPipeline_, rayPipeline_, rayShadePipeline_;
+    // What the rays gathered, per slot (BIND_BOUNCE_TRACED), and the normals
+    // they read (BIND_BOUNCE_RAY_NORMALS): made at the first ray bounce and
+    // again when the slot capacity changes.
+    mutable gpu::Image traced_, rayNormals_;
 };
 
 }  // namespace dvsgi::vxgi

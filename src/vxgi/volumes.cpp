@@ -79,9 +79,12 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRa
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
         {"occupied-voxel list", "uint32 buffer", voxelListBytes(slots)},
     };
-    // BouncePass's (tracedImageDesc), per slot like the above.
-    if (bounceRays)
+    // BouncePass's (tracedImageDesc, rayNormalsImageDesc), per slot like the above.
+    if (bounceRays) {
         items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * sh::BOUNCE_RAYS_SLOT_BYTES});
+        items.push_back({"voxel bounce rays' normals (per slot)", "R32_UINT",
+                         uint64_t(slots) * sh::BOUNCE_RAY_NORMAL_SLOT_BYTES});
+    }
     return items;
 }
 

@@ -106,8 +106,9 @@ TEST(BytesModel, DefaultVoxelStorageAt256IsAtMost24BytesPerGridVoxel) {
     const double rays = vxgi::voxelBytesPerGridVoxel(256, slots, true);
     const double cones = vxgi::voxelBytesPerGridVoxel(256, slots, false);
     EXPECT_LE(rays, 24.0);
-    EXPECT_NEAR(rays - cones, double(slots) * 8.0 / (256.0 * 256.0 * 256.0), 1e-9);
-    EXPECT_NEAR(rays, 22.98, 0.01);
+    // The rays' light (8 bytes) and their voxels' packed normals (4) per slot.
+    EXPECT_NEAR(rays - cones, double(slots) * 12.0 / (256.0 * 256.0 * 256.0), 1e-9);
+    EXPECT_NEAR(rays, 23.17, 0.01);
 }
 
 TEST(BytesModel, DenseVoxelPassesMatchTheVolumeSizes) {

@@ -38,14 +38,17 @@ glm::vec3 wallNormal(glm::ivec3 c) {
     return walls == 1 ? n : glm::vec3(0.0f);
 }
 
-// voxelNormal of the voxel at c from the read-back attribute sums.
+// voxelNormal of the voxel at c from the read-back attribute sums, packed as the rays read it.
 glm::vec3 normalOf(const VoxelReadback& attributes, glm::ivec3 c) {
     glm::vec3 n(0.0f);
     for (int a = 0; a < 3; ++a)
         n[a] = std::sqrt(attributes.at(c.x, c.y, c.z, shader::CH_NORMAL_POS_X + 2 * a)) -
                std::sqrt(attributes.at(c.x, c.y, c.z, shader::CH_NORMAL_NEG_X + 2 * a));
     const float len = glm::length(n);
-    return len > 1e-6f ? n / len : glm::vec3(0.0f);
+    if (len <= 1e-6f) return glm::vec3(0.0f);
+    // As the rays read it (BIND_BOUNCE_RAY_NORMALS): each axis in steps of 1/RAY_NORMAL_SCALE.
+    const float scale = shader::RAY_NORMAL_SCALE;
+    return glm::floor(glm::clamp(n / len, -1.0f, 1.0f) * scale + 0.5f) / scale;
 }
 
 // passesInFront: the ray p + d t, inside voxel c, leaves it (at tExit) before
