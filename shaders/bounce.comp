@@ -18,7 +18,8 @@
 // light kept per slot; built with TRACED, the second: as below, with that
 // light instead of the cones'.
 // Built with RAY_NORMALS, the dispatch before the rays: each voxel's mean
-// normal, packed per slot for the rays to read.
+// normal, packed per slot for the rays to read, and its cells' occupancy
+// bits (the buffer cleared before).
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
@@ -44,6 +45,7 @@ layout(set = 0, binding = BIND_BOUNCE_TRACED, rg32ui) uniform uimage3D traced;
 #endif
 #if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
 layout(set = 0, binding = BIND_BOUNCE_RAY_NORMALS, r32ui) uniform uimage3D rayNormals;
+layout(set = 0, binding = BIND_BOUNCE_RAY_OCCUPANCY, std430) buffer RayOccupancy { uint rayOccupancy[]; };
 #endif
 #if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
 VOXEL_INDEX_BLOCK(BIND_BOUNCE_INDEX, readonly);
@@ -120,6 +122,11 @@ void main() {
     uint entry = listInvocation();
     if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
     imageStore(rayNormals, slotTexel(entry, 0u), uvec4(packRayNormal(voxelNormal(entry)), 0u, 0u, 0u));
+    ivec3 v = listVoxel(list.entries[entry]);
+    for (uint level = 0u; level < RAY_OCCUPANCY_LEVELS; ++level) {
+        uint bit = rayOccupancyBit(v, level);
+        atomicOr(rayOccupancy[rayOccupancyOffset(grid.dims.x, level) + bit / 32u], 1u << (bit % 32u));
+    }
 }
 #elif defined(DVSGI_RAY_TRACE)
 // Rays start a voxel off the voxel's centre (docs/quality.md: from two off,

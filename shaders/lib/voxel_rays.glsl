@@ -3,7 +3,8 @@
 // crosses, Amanatides & Woo) and takes the radiance of the first occupied
 // one, so a wall one voxel thick stops it however it meets the wall. Needs
 // `grid`, the radiance volume `outRadiance` (read only in that pass), the
-// side light `sides`, the packed normals `rayNormals` and lib/voxel_index.glsl.
+// side light `sides`, the packed normals `rayNormals`, the occupancy bits
+// `rayOccupancy` and lib/voxel_index.glsl.
 
 // A normal as the rays keep it per slot (BIND_BOUNCE_RAY_NORMALS): each
 // axis rounded to steps of 1/RAY_NORMAL_SCALE, offset to be unsigned.
@@ -30,12 +31,20 @@ vec3 radianceSeen(uint slot, vec4 r, vec3 d) {
     return unpackRgb9e5(plusSide ? t.x : t.y) + unpackRgb9e5(plusSide ? t.z : t.w);
 }
 
-// Whether the directional volumes' cell c of mip `lod` (cells of 2^(lod+1)
-// voxels) holds no occupied voxel: its opacity is a composite and mean of
-// its voxels', so it is 0 only where all are empty (the -X volume, the
-// atlas's first, is as good as any). A grid too small for that mip has none.
-bool cellEmpty(ivec3 c, int lod) {
-    return lod < int(grid.dims.z) && texelFetch(directional, c, lod).a <= 0.0;
+// The bit of the cell of occupancy level `level` that holds voxel v.
+uint rayOccupancyBit(ivec3 v, uint level) {
+    uvec3 c = uvec3(v) >> (level + 1u);
+    uint m = rayOccupancySide(grid.dims.x, level);
+    return c.x + m * (c.y + m * c.z);
+}
+
+// Whether the cell of 2^(level + 1) voxels holding voxel v holds no occupied
+// voxel (BIND_BOUNCE_RAY_OCCUPANCY, set from this frame's voxels; the
+// directional volumes' mips, read before, could still show last frame's).
+// `offset`: rayOccupancyOffset of the level.
+bool cellEmpty(ivec3 v, uint level, uint offset) {
+    uint bit = rayOccupancyBit(v, level);
+    return (rayOccupancy[offset + bit / 32u] & (1u << (bit % 32u))) == 0u;
 }
 
 // The ray parameter where a ray from p along d (1/d = inv) leaves the box
@@ -80,24 +89,26 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
 // voxel not on the surface of `self` (centre, normal n) that it does not pass
 // in front of (that voxel's light), or where it leaves the grid (nothing).
 // Empty space is crossed a whole cell at a time, sixteen voxels, eight, four
-// or two, wherever the directional volumes' mips show the cell empty. A ray
+// or two, wherever the occupancy bits show the cell empty (`offsets`: each
+// level's rayOccupancyOffset). A ray
 // that starts inside another surface's voxel meets that surface's back at no
 // distance: no light (a floor under a box standing on it). Taking that
 // voxel's radiance instead made two surfaces a voxel apart light each other
 // without loss: with albedo 1 (the Cornell box's white) the light between
 // them never converged.
-bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, int N, out vec3 seen) {
+bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, int N, uvec4 offsets,
+                  out vec3 seen) {
     seen = vec3(0.0);
     ivec3 c = ivec3(floor(p + d * t));
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return true;
     float size = 1.0;
-    if (cellEmpty(c >> 4, 3)) {
+    if (cellEmpty(c, 3u, offsets.w)) {
         size = 16.0;
-    } else if (cellEmpty(c >> 3, 2)) {
+    } else if (cellEmpty(c, 2u, offsets.z)) {
         size = 8.0;
-    } else if (cellEmpty(c >> 2, 1)) {
+    } else if (cellEmpty(c, 1u, offsets.y)) {
         size = 4.0;
-    } else if (cellEmpty(c >> 1, 0)) {
+    } else if (cellEmpty(c, 0u, 0u)) {
         size = 2.0;
     } else {
         vec4 r = imageLoad(outRadiance, c);
@@ -140,6 +151,8 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
     float t = 0.0;
     int step = 0;
     uint ray = 0u, total = count + backCount;
+    uvec4 offsets = uvec4(0u, rayOccupancyOffset(grid.dims.x, 1u), rayOccupancyOffset(grid.dims.x, 2u),
+                          rayOccupancyOffset(grid.dims.x, 3u));
     for (int k = 0; ray < total && k < int(total) * 4 * N; ++k) {
         if (step == 0) {
             // The back side's frame is the front's turned about b: (-tx, b, -n).
@@ -154,7 +167,7 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
             t = 0.0;
         }
         vec3 seen;
-        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, N, seen);
+        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, N, offsets, seen);
         ++step;
         if (ends || step >= 4 * N) {
             if (ray < count) front += seen;

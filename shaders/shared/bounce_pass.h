@@ -55,6 +55,26 @@ DVSGI_CONST(uint, BIND_BOUNCE_RAY_NORMALS, 13);
 DVSGI_CONST(uint, BOUNCE_RAY_NORMAL_SLOT_BYTES, 4);  // its texel
 DVSGI_CONST(uint, RAY_NORMAL_BITS, 10);
 DVSGI_CONST(float, RAY_NORMAL_SCALE, 511.0);
+// Rays: which cells of 2, 4, 8 and 16 voxels per side hold an occupied
+// voxel, one bit per cell (RAY_OCCUPANCY_LEVELS levels, level l's cells of
+// 2^(l + 1) voxels, bit x + m (y + m z) from word rayOccupancyOffset(n, l),
+// m = rayOccupancySide(n, l)), set by the dispatch that packs the normals
+// from this frame's voxels, so that a ray crosses empty cells whole.
+DVSGI_CONST(uint, BIND_BOUNCE_RAY_OCCUPANCY, 14);
+DVSGI_CONST(uint, RAY_OCCUPANCY_LEVELS, 4);
+DVSGI_FUNCTION uint rayOccupancySide(uint n, uint level) {
+    uint m = n >> (level + 1u);
+    return m > 0u ? m : 1u;
+}
+// Words before level `level`'s bits; at RAY_OCCUPANCY_LEVELS, all of them.
+DVSGI_FUNCTION uint rayOccupancyOffset(uint n, uint level) {
+    uint words = 0u;
+    for (uint l = 0u; l < level; ++l) {
+        uint m = rayOccupancySide(n, l);
+        words += (m * m * m + 31u) / 32u;
+    }
+    return words;
+}
 
 // The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU
 // march: the R2 sequence over the unit square, shifted per voxel by a hash.

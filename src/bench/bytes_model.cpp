@@ -92,19 +92,25 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         // Direct light into the slot and the radiance volume.
         out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),
                        occupied * 2 * kVoxelLightBytes});
-        out.push_back(filtering(in.voxels, occupied, "voxel filtering"));
+        // Rays read no filtered light: with a ray bounce after it, the voxel
+        // light is not filtered until that bounce has run.
+        if (!(in.bounceRays && bounces > 0)) out.push_back(filtering(in.voxels, occupied, "voxel filtering"));
         // Cone and ray samples are not counted: the bytes are those of the
         // voxel's own attributes, direct light and result (with rays, also
         // the list and attributes read again by the shading dispatch, the
         // per-slot result the rays hand over, and the dispatch before the
-        // rays that packs each voxel's normal).
+        // rays that packs each voxel's normal and sets its cells' occupancy
+        // bits, one word per level read and written, after the bits' clear).
         PassTraffic bounce{"voxel bounce",
                            bounces * occupied * (kListEntryBytes + kBounceAttributeBytes + kVoxelLightBytes),
                            bounces * occupied * kVoxelLightBytes};
         if (in.bounceRays) {
             bounce.readBytes += bounces * occupied *
                                 (2 * kListEntryBytes + kBounceAttributeBytes + kRayResultBytes + kRayNormalAttributeBytes);
-            bounce.writtenBytes += bounces * occupied * (kRayResultBytes + kRayNormalBytes);
+            const uint64_t bitWords = occupied * sh::RAY_OCCUPANCY_LEVELS * sizeof(uint32_t);
+            bounce.readBytes += bounces * bitWords;
+            bounce.writtenBytes += bounces * (occupied * (kRayResultBytes + kRayNormalBytes) + bitWords +
+                                              sh::rayOccupancyOffset(in.voxels, sh::RAY_OCCUPANCY_LEVELS) * 4);
         }
         out.push_back(bounce);
         PassTraffic again = filtering(in.voxels, occupied, "voxel filtering (bounce)");

@@ -23,7 +23,8 @@ struct ModelInputs {
     uint64_t staticGeometryBytes = 0;   // vertex + index bytes of the static draws
     uint64_t dynamicGeometryBytes = 0;  // the same for the dynamic draws
     uint32_t bounces = 1;  // voxel bounces per frame, each followed by a re-filtering
-    bool bounceRays = false;  // the bounce marches rays (--bounce-trace rays): a per-slot result between two dispatches
+    bool bounceRays = false;  // the bounce marches rays (--bounce-trace rays): three dispatches, and with
+                              // bounces > 0 no filtering before the first
     bool temporal = false;  // the temporal accumulation of the indirect term runs (with voxels)
 };
 

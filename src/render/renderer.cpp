@@ -276,11 +276,18 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     light.keepSideReflection = feedback;
     light.keepStaticRadiance = feedback && staticLightKept_ && bounceRays();
     const std::optional<vxgi::ClipTrace> trace = bounceTrace();
+    // Rays read no filtered light, and mark the cells that hold voxels
+    // themselves: where a ray bounce follows in this frame, the filtering
+    // after it is the first that anything reads.
+    const vxgi::BounceMode mode = settings_.voxelLight.bounceMode;
+    const bool bounceFollows = !feedback && (mode == vxgi::BounceMode::Converge ||
+                                             (mode == vxgi::BounceMode::Fixed && settings_.voxelLight.bounces > 0));
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {
                      inject_->record(cmd, tracker_, v, shadows, light, t);
                      if (feedback) recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, false, blend);
-                 });
+                 },
+                 !(bounceFollows && bounceRays()));
 }
 
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {

@@ -207,9 +207,9 @@ private:
     void recordClipmapVoxels(VkCommandBuffer cmd);
     void recordClipmapStatic(VkCommandBuffer cmd, size_t level, const glm::ivec3& windowMin);
     // Per level: `pass`, then its filtering (and with --clipmap, its atlas
-    // copy); then the atlas fold.
+    // copy); then the atlas fold. `filter` false (no clipmap): `pass` alone.
     void recordLevels(VkCommandBuffer cmd, const char* filterTimer,
-                      const std::function<void(size_t, const vxgi::VoxelVolumes&)>& pass);
+                      const std::function<void(size_t, const vxgi::VoxelVolumes&)>& pass, bool filter = true);
     std::shared_ptr<vxgi::DenseVolumes> clipScratch() const;
     vxgi::VoxelVolumes& level(size_t l) { return l == 0 ? *volumes_ : *clip_[l].volumes; }
     const gpu::Buffer& levelHeader(size_t l) const { return l == 0 ? *listHeader_ : *clip_[l].header; }

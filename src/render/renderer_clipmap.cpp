@@ -152,7 +152,7 @@ void Renderer::recordClipmapVoxels(VkCommandBuffer cmd) {
 // atlases, before the next level reuses them. A level's bounce traces only its
 // own and coarser levels, whose slabs still hold what it must read.
 void Renderer::recordLevels(VkCommandBuffer cmd, const char* filterTimer,
-                            const std::function<void(size_t, const vxgi::VoxelVolumes&)>& pass) {
+                            const std::function<void(size_t, const vxgi::VoxelVolumes&)>& pass, bool filter) {
     const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
     for (size_t l = 0; l < levels.size(); ++l) {
         if (l > 0) {
@@ -160,6 +160,7 @@ void Renderer::recordLevels(VkCommandBuffer cmd, const char* filterTimer,
             clearImage(cmd, tracker_, levels[l]->radiance);
         }
         pass(l, *levels[l]);
+        if (!filter && clip_.empty()) continue;
         aniso_->record(cmd, tracker_, *levels[l], timers_.get(), filterTimer);
         if (clip_.empty()) continue;
         gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");

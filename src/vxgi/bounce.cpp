@@ -69,6 +69,10 @@ gpu::ImageDesc rayNormalsImageDesc(uint32_t slots) {
     return d;
 }
 
+VkDeviceSize rayOccupancyBytes(uint32_t n) {
+    return VkDeviceSize(sh::rayOccupancyOffset(n, sh::RAY_OCCUPANCY_LEVELS)) * sizeof(uint32_t);
+}
+
 BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;
@@ -88,6 +92,7 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     rays.bindings.push_back({sh::BIND_BOUNCE_TRACED, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
     rays.bindings.push_back({sh::BIND_BOUNCE_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
     rays.bindings.push_back({sh::BIND_BOUNCE_RAY_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    rays.bindings.push_back({sh::BIND_BOUNCE_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
     rayNormalsPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayNormals), rays, "voxel bounce rays' normals");
     rayPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayTrace), rays, "voxel bounce rays");
     rayShadePipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceTraced), rays, "voxel bounce (rays' light)");
@@ -130,6 +135,15 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
             traced_ = gpu::Image(ctx_, want);
             rayNormals_ = gpu::Image(ctx_, rayNormalsImageDesc(v.slots));
         }
+        const VkDeviceSize occupancyBytes = rayOccupancyBytes(v.grid.n);
+        if (!rayOccupancy_.handle() || rayOccupancy_.size() != occupancyBytes)
+            rayOccupancy_ = gpu::Buffer(ctx_, occupancyBytes,
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        gpu::MemoryUse::Device, "voxel bounce rays' occupancy bits");
+        // Set bit by bit from this frame's voxels.
+        tracker.buffer(rayOccupancy_, gpu::use::BufferTransferWrite).flush(cmd);
+        vkCmdFillBuffer(cmd, rayOccupancy_.handle(), 0, VK_WHOLE_SIZE, 0);
+        tracker.buffer(rayOccupancy_, gpu::use::BufferComputeReadWrite);
         tracker.buffer(v.index, gpu::use::BufferComputeRead);
         // The rays read the radiance and side light that the shading pass after them writes.
         tracker.image(v.radiance, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);
@@ -157,7 +171,8 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     if (rays) {
         d.storageImage(sh::BIND_BOUNCE_TRACED, traced_.view())
             .storageBuffer(sh::BIND_BOUNCE_INDEX, v.index.handle())
-            .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rayNormals_.view());
+            .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rayNormals_.view())
+            .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rayOccupancy_.handle());
     }
     const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
                                                   std::bit_cast<uint32_t>(history->alpha), 0u)
@@ -168,7 +183,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         gpu::bind(cmd, rayNormalsPipeline_);
         d.push(ctx_, cmd, rayNormalsPipeline_);
         dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
-        tracker.image(rayNormals_, gpu::use::ComputeRead).flush(cmd);
+        tracker.image(rayNormals_, gpu::use::ComputeRead).buffer(rayOccupancy_, gpu::use::BufferComputeRead).flush(cmd);
         gpu::bind(cmd, rayPipeline_);
         d.push(ctx_, cmd, rayPipeline_);
         gpu::pushConstants(cmd, rayPipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);

@@ -3,7 +3,8 @@
 // Repeated with filtering in between, or once per frame from the previous
 // frame's volumes (feedback), it adds one bounce of light each time.
 // With rays (--bounce-trace rays, a fitted grid's) a first dispatch packs
-// each voxel's normal per slot, a second marches each voxel's rays through
+// each voxel's normal per slot and marks the coarse cells that hold voxels,
+// a second marches each voxel's rays through
 // the radiance volume, voxel by voxel, reading those normals, and keeps what
 // they gathered per slot; the third shades as the cones' pass does. Three
 // dispatches, because the rays read normals of voxels other invocations
@@ -38,6 +39,8 @@ gpu::ImageDesc historyImageDesc(uint32_t slots);
 gpu::ImageDesc tracedImageDesc(uint32_t slots);
 // The voxels' packed normals per slot that the rays read (BIND_BOUNCE_RAY_NORMALS): R32UI.
 gpu::ImageDesc rayNormalsImageDesc(uint32_t slots);
+// Bytes of the rays' occupancy bits of an n^3 grid (BIND_BOUNCE_RAY_OCCUPANCY).
+VkDeviceSize rayOccupancyBytes(uint32_t n);
 
 class BouncePass {
 public:
@@ -57,7 +60,9 @@ public:
                 const ClipTrace* clip = nullptr, uint32_t level = 0, const VoxelHistory* history = nullptr) const;
     static uint32_t statsFloats(uint32_t slots);
     // Bytes of the rays' per-slot results (0 until rays were traced).
-    VkDeviceSize rayBytes() const { return traced_.handle() ? traced_.memorySize() + rayNormals_.memorySize() : 0; }
+    VkDeviceSize rayBytes() const {
+        return traced_.handle() ? traced_.memorySize() + rayNormals_.memorySize() + rayOccupancy_.size() : 0;
+    }
 
 private:
     const gpu::Context& ctx_;
@@ -69,6 +74,9 @@ private:
     // they read (BIND_BOUNCE_RAY_NORMALS): made at the first ray bounce and
     // again when the slot capacity changes.
     mutable gpu::Image traced_, rayNormals_;
+    // Which cells the rays may cross whole (BIND_BOUNCE_RAY_OCCUPANCY), made
+    // at the first ray bounce and again when the grid's size changes.
+    mutable gpu::Buffer rayOccupancy_;
 };
 
 }  // namespace dvsgi::vxgi
