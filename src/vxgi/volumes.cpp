@@ -84,7 +84,7 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRa
         items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * sh::BOUNCE_RAYS_SLOT_BYTES});
         items.push_back({"voxel bounce rays' normals (per slot)", "R32_UINT",
                          uint64_t(slots) * sh::BOUNCE_RAY_NORMAL_SLOT_BYTES});
-        items.push_back({"voxel bounce rays' occupancy (bits per 2^3-16^3 cell)", "uint32 buffer",
+        items.push_back({"voxel bounce rays' occupancy bits", "uint32 buffer",
                          uint64_t(sh::rayOccupancyOffset(n, sh::RAY_OCCUPANCY_LEVELS)) * 4});
     }
     return items;
