@@ -93,6 +93,13 @@ std::vector<Setting> conesAndCommands() {
                      kAll, kFrame},
                     0, 8, FIELD(settings.cones.clearance)),
              "2", "a number in 0..8 (0 = off)"),
+        with(toggle({"cone-spin", kCones, "on|off", "",
+                     "turn the six diffuse cones about the normal by a quarter of 72 degrees more in each pixel of "
+                     "a 2x2 block and resolve the turns with a depth- and normal-aware 3x3 tent, so that "
+                     "neighbours sample 24 directions together (off: the paper's fixed set; no effect with --cones 16)",
+                     kAll, kFrame},
+                    FIELD(settings.gather.spin)),
+             "off"),
         with(toggle({"specular", kCones, "on|off", "",
                      "one cone along the reflected view direction for glossy materials, tan(half-angle) = "
                      "roughness^2",

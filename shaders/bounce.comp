@@ -178,7 +178,7 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
     // Start off the surface (two voxels: vxgi::bounceCones) so the cones do not gather the voxel itself.
     vec3 origin = grid.originSize.xyz + (vec3(v) + 0.5 + n * pc.cone.surface.z) * s;
     float occlusion;
-    vec3 reflected = albedo / PI * gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, occlusion);
+    vec3 reflected = albedo / PI * gatherIrradiance6(origin, n, s * pc.cone.surface.z, pc.cone, 0.0, 0.0, occlusion);
     // The other side of a two-sided voxel gathers with one cone of 60 degrees
     // half-angle: six cones cost the bounce 40 % more on Sponza, where many
     // voxels hold thin geometry.

@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
+#include "shared/cone_resolve_pass.h"
 #include "shared/gather_pass.h"
 #include "shared/voxel_data.h"
 
@@ -44,7 +45,8 @@ float specularTanHalf(float roughness) {
 }
 
 // Indirect diffuse (rgb, a = 1 - occlusion) and specular at surface point P.
-void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, out vec4 diffuseOut, out vec3 specular) {
+// `turn`: the six cones' turn about N (coneSpinTurn).
+void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, float turn, out vec4 diffuseOut, out vec3 specular) {
     float metallic = base.a;
     // Offset along the normal so the surface does not sample its own voxels.
     float originHeight = pc.cone.surface.z * traceGrid(CONE_FIRST_LEVEL).originSize.w;
@@ -52,7 +54,7 @@ void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, out vec4 diffu
 
     float occlusion;
     vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
-                                       : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, occlusion);
+                                       : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, turn, occlusion);
     // Demodulated: the albedo base.rgb (1 - metallic) multiplies it in the
     // composite, after upsampling and temporal accumulation, so those filter
     // the smooth irradiance and never blur or smear the textures.
@@ -86,6 +88,9 @@ void main() {
     vec4 nr = texelFetch(gNormal, g, 0);
     vec3 N = normalize(nr.xyz);
     vec3 V = normalize(frame.cameraPos.xyz - P);
+    float turn = pc.flags.x == 0u ? 0.0
+               : pc.flags.x == 1u ? coneSpinTurn(px.x, px.y)
+                                  : float(pc.flags.x - 2u) / (5.0 * float(CONE_SPIN_STEPS));
 #ifdef DVSGI_CLIPMAP
     // Near the face of the level the pixel starts at, the next level's
     // gather is blended in, so the start level changes without a seam.
@@ -93,19 +98,19 @@ void main() {
     coneFirst = clipSurfaceLevel(P, blend);
     vec4 diffuse;
     vec3 specular;
-    gatherAt(P, N, V, base, nr.w, diffuse, specular);
+    gatherAt(P, N, V, base, nr.w, turn, diffuse, specular);
     if (blend > 0.0) {
         vec4 d1;
         vec3 s1;
         coneFirst += 1;
-        gatherAt(P, N, V, base, nr.w, d1, s1);
+        gatherAt(P, N, V, base, nr.w, turn, d1, s1);
         diffuse = mix(diffuse, d1, blend);
         specular = mix(specular, s1, blend);
     }
 #else
     vec4 diffuse;
     vec3 specular;
-    gatherAt(P, N, V, base, nr.w, diffuse, specular);
+    gatherAt(P, N, V, base, nr.w, turn, diffuse, specular);
 #endif
     imageStore(outDiffuse, px, diffuse);
     imageStore(outSpecular, px, vec4(specular, 1.0));

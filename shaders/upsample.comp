@@ -19,16 +19,7 @@ layout(set = 0, binding = BIND_UP_OUT_DIFFUSE, rgba16f) uniform writeonly image2
 layout(set = 0, binding = BIND_UP_OUT_SPECULAR, rgba16f) uniform writeonly image2D outSpecular;
 layout(push_constant) uniform Push { UpsamplePush pc; };
 
-float linearDepth(ivec2 g) {
-    vec2 ndc = (vec2(g) + 0.5) / vec2(frame.sizes.xy) * 2.0 - 1.0;
-    vec4 w = frame.invViewProj * vec4(ndc, texelFetch(gDepth, g, 0).r, 1.0);
-    return length(w.xyz / w.w - frame.cameraPos.xyz);
-}
-
-// The G-buffer pixel a trace pixel stands for (same mapping as gather.comp).
-ivec2 gbufferPixel(ivec2 low) {
-    return min(ivec2((vec2(low) + 0.5) * vec2(pc.sizes.zw) / vec2(pc.sizes.xy)), ivec2(pc.sizes.zw) - 1);
-}
+#include "lib/trace_pixels.glsl"
 
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -48,13 +39,12 @@ void main() {
             ivec2 g = gbufferPixel(l);
             float bil = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
             float dz = abs(linearDepth(g) - z) / max(z, 1e-6);
-            float wn = pow(max(dot(texelFetch(gNormal, g, 0).xyz, n), 0.0), 8.0);
-            float w = bil * wn / (1.0 + 100.0 * dz);
+            float similarity = surfaceSimilarity(dz, n, texelFetch(gNormal, g, 0).xyz);
+            float w = bil * similarity;
             vec4 d = imageLoad(lowDiffuse, l), s = imageLoad(lowSpecular, l);
             diff += w * d;
             spec += w * s;
             wsum += w;
-            float similarity = wn / (1.0 + 100.0 * dz);
             if (similarity > best) {
                 best = similarity;
                 nearestDiff = d;

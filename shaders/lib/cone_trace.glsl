@@ -459,13 +459,19 @@ vec3 sixConeDirection(vec3 n, vec3 t, vec3 b, int k) {
     return normalize(0.5 * n + 0.8660254 * (cos(phi) * t + sin(phi) * b));
 }
 
-// The paper's six 60-degree cones: one along n, five at 60 degrees from it.
+// The paper's six 60-degree cones: one along n, five at 60 degrees from it,
+// the set turned about n by `turn` (a fraction of a full turn).
 // `occlusion` is the cones' opacity weighted by f(r) = 1 / (1 + aoLambda r);
 // with aoLambda = 0 it is their plain opacity (the voxel bounce).
-vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams params, float aoLambda,
+vec3 gatherIrradiance6(vec3 origin, vec3 n, float originHeight, ConeParams params, float aoLambda, float turn,
                        out float occlusion) {
     vec3 t, b;
     coneBasis(n, t, b);
+    if (turn != 0.0) {
+        float a = TWO_PI * turn;
+        t = cos(a) * t + sin(a) * b;
+        b = cross(n, t);
+    }
     float ao;
 #ifdef DVSGI_SINGLE_CONE
     // Diagnostics (scripts/cone-check.sh): the irradiance as if cone k alone

@@ -13,7 +13,9 @@ struct GatherPush {
     ConeParams cone;  // step factor, min step, max distance, first sample distance
     vec4 params;      // x unused, y AO lambda (per voxel of distance), z unused,
                       // w minimum specular half-angle tangent
-    uvec4 flags;      // x unused, y specular on, z trace width, w trace height
+    uvec4 flags;      // x 1: turn the six cones per pixel (coneSpinTurn, resolved by cone_resolve.comp),
+                      // 2 + k: every pixel by k steps (tests), 0: not at all;
+                      // y specular on, z trace width, w trace height
 };
 DVSGI_CHECK_SIZE(GatherPush, 64);
 

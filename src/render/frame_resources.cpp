@@ -67,6 +67,8 @@ FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
         t.traceSpecular = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, t.traceWidth, t.traceHeight, storage,
                                   "specular (trace size)");
     }
+    t.turnedDiffuse = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, t.traceWidth, t.traceHeight, storage,
+                              "indirect diffuse (turned cones)");
     t.output = image2D(ctx, VK_FORMAT_R32G32B32A32_SFLOAT, s.width, s.height, storage, "output");
     if (s.temporalHistory)
         for (int i = 0; i < 2; ++i) {

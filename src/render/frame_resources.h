@@ -49,6 +49,7 @@ struct FrameTargets {
     gpu::Image visibility;         // R16F internal size: mean visibility of the lights facing each pixel
     gpu::Image diffuse, specular;  // RGBA16F internal size: cone-traced indirect diffuse (+ AO in a), specular
     gpu::Image traceDiffuse, traceSpecular;  // the same at trace size, only when traceScale < 1
+    gpu::Image turnedDiffuse;      // RGBA16F trace size: the six cones' diffuse term before its resolve
     gpu::Image output;             // RGBA32F output size: the composited frame, or the voxel view
     TemporalHistory temporal;      // empty without FrameSize::temporalHistory
     uint32_t traceWidth = 0, traceHeight = 0;

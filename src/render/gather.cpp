@@ -6,6 +6,7 @@
 #include "gpu/tracker.h"
 #include "gpu/context.h"
 #include "gpu/timers.h"
+#include "shared/cone_resolve_pass.h"
 #include "shared/gather_pass.h"
 #include "shared/upsample_pass.h"
 #include "shared/voxel_data.h"
@@ -24,6 +25,9 @@ const uint32_t kGather[] = {
 };
 const uint32_t kGatherClipmap[] = {
 #include "shaders/gather_clipmap.comp.inc"
+};
+const uint32_t kConeResolve[] = {
+#include "shaders/cone_resolve.comp.inc"
 };
 const uint32_t kUpsample[] = {
 #include "shaders/upsample.comp.inc"
@@ -50,6 +54,16 @@ GatherPass::GatherPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     gather_ = gpu::Pipeline(ctx, gpu::Spirv(kGather), layout, "cone tracing");
     if (clipmap) clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
 
+    gpu::LayoutDesc resolve;
+    resolve.bindings = {{sh::BIND_RESOLVE_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
+                        {sh::BIND_RESOLVE_NORMAL, sampled, cs},
+                        {sh::BIND_RESOLVE_DEPTH, sampled, cs},
+                        {sh::BIND_RESOLVE_TRACED, storage, cs},
+                        {sh::BIND_RESOLVE_OUT, storage, cs}};
+    resolve.pushConstantBytes = sizeof(sh::ConeResolvePush);
+    resolve.pushConstantStages = cs;
+    resolve_ = gpu::Pipeline(ctx, gpu::Spirv(kConeResolve), resolve, "cone set resolve");
+
     gpu::LayoutDesc up;
     up.bindings = {{sh::BIND_UP_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                    {sh::BIND_UP_NORMAL, sampled, cs},
@@ -63,10 +77,34 @@ GatherPass::GatherPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     upsample_ = gpu::Pipeline(ctx, gpu::Spirv(kUpsample), up, "upsample");
 }
 
+void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in,
+                               const gpu::Image& turned, const gpu::Image& resolved, gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "cone set resolve");
+    const GBuffer& g = in.gbuffer;
+    tracker.image(turned, gpu::use::ComputeRead).image(resolved, gpu::use::ComputeWrite, true).flush(cmd);
+    gpu::bind(cmd, resolve_);
+    const VkSampler point = in.samplers.point.handle();
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_RESOLVE_FRAME, in.frame.handle())
+        .sampledImage(sh::BIND_RESOLVE_NORMAL, g.normal.view(), point)
+        .sampledImage(sh::BIND_RESOLVE_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+        .storageImage(sh::BIND_RESOLVE_TRACED, turned.view())
+        .storageImage(sh::BIND_RESOLVE_OUT, resolved.view())
+        .push(ctx_, cmd, resolve_);
+    const uint32_t width = turned.desc().extent.width, height = turned.desc().extent.height;
+    const sh::ConeResolvePush push{glm::uvec4(width, height, g.depth.desc().extent.width, g.depth.desc().extent.height)};
+    gpu::pushConstants(cmd, resolve_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    vkCmdDispatch(cmd, gpu::groupCount(width, sh::RESOLVE_GROUP), gpu::groupCount(height, sh::RESOLVE_GROUP), 1);
+}
+
 void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const GatherTargets& out,
                         const GatherSettings& s, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const {
     const bool reduced = out.traceDiffuse != nullptr;
     const gpu::Image& outD = reduced ? *out.traceDiffuse : out.diffuse;
+    // With the turned six cones the gather writes the turned term, resolved into outD.
+    const bool spin = s.spin && cone.coneSet == sh::CONE_SET_6;
+    const bool resolve = spin && s.fixedTurn < 0;
+    const gpu::Image& tracedD = resolve ? out.turnedDiffuse : outD;
     const gpu::Image& outS = reduced ? *out.traceSpecular : out.specular;
     const GBuffer& g = in.gbuffer;
     const vxgi::VoxelVolumes& v = in.volumes;
@@ -82,7 +120,7 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
         if (in.clip)
             tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
                 .image(in.clip->atlases.directional, gpu::use::ComputeRead);
-        tracker.image(outD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
+        tracker.image(tracedD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
         const VkSampler volumeSampler = in.samplers.volume.handle();
         const gpu::Pipeline& pipeline = in.clip ? clipGather_ : gather_;
         gpu::bind(cmd, pipeline);
@@ -102,17 +140,19 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .sampledImage(sh::BIND_GATHER_BASE, g.base.view(), point)
             .sampledImage(sh::BIND_GATHER_NORMAL, g.normal.view(), point)
             .sampledImage(sh::BIND_GATHER_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .storageImage(sh::BIND_GATHER_OUT_DIFFUSE, outD.view())
+            .storageImage(sh::BIND_GATHER_OUT_DIFFUSE, tracedD.view())
             .storageImage(sh::BIND_GATHER_OUT_SPECULAR, outS.view())
             .push(ctx_, cmd, pipeline);
         sh::GatherPush push{};
         // Cones may run as far as the largest grid reaches.
         push.cone = vxgi::gpuCone(cone, in.clip ? in.clip->coarsest : v.grid);
         push.params = glm::vec4(0.0f, s.aoLambda, 0.0f, std::tan(glm::radians(s.minSpecularDegrees)));
-        push.flags = glm::uvec4(0u, s.specular ? 1u : 0u, traceWidth, traceHeight);
+        const uint32_t turn = !spin ? 0u : resolve ? 1u : 2u + uint32_t(s.fixedTurn) % sh::CONE_SPIN_STEPS;
+        push.flags = glm::uvec4(turn, s.specular ? 1u : 0u, traceWidth, traceHeight);
         gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(traceWidth, sh::GATHER_GROUP), gpu::groupCount(traceHeight, sh::GATHER_GROUP), 1);
     }
+    if (resolve) recordResolve(cmd, tracker, in, out.turnedDiffuse, outD, timers);
     if (!reduced) return;
     gpu::GpuTimerScope timer(timers, cmd, "upsample");
     const uint32_t width = out.diffuse.desc().extent.width, height = out.diffuse.desc().extent.height;

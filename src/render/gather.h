@@ -26,6 +26,13 @@ struct GatherSettings {
     // Trace resolution / internal resolution. Half: a quarter of the cone work;
     // the reference renders differ by under 0.003 relative RMSE (docs/quality.md).
     float traceScale = 0.5f;
+    // The six-cone set turned per pixel over 2x2 blocks, then resolved by a
+    // 3x3 tent (cone_resolve.comp): blotches a cone wide become none
+    // (docs/quality.md, "Six cones, turned per pixel"). Off: the paper's fixed set.
+    bool spin = true;
+    // Tests: with spin, every pixel turned by this many steps (0..CONE_SPIN_STEPS-1)
+    // and nothing resolved; -1: turned per pixel and resolved.
+    int fixedTurn = -1;
 };
 
 struct GatherInputs {
@@ -43,6 +50,9 @@ struct GatherTargets {
     const gpu::Image& specular;
     const gpu::Image* traceDiffuse = nullptr;   // null: trace at internal size
     const gpu::Image* traceSpecular = nullptr;
+    // Trace size: the diffuse term as the turned cones left it, before the
+    // resolve (GatherSettings::spin with the six-cone set).
+    const gpu::Image& turnedDiffuse;
 };
 
 class GatherPass {
@@ -54,8 +64,12 @@ public:
                 const GatherSettings& settings, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const;
 
 private:
+    // The turned six cones' term (trace size) resolved by a 3x3 tent into `resolved`.
+    void recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const gpu::Image& turned,
+                       const gpu::Image& resolved, gpu::GpuTimers* timers) const;
+
     const gpu::Context& ctx_;
-    gpu::Pipeline gather_, clipGather_, upsample_;
+    gpu::Pipeline gather_, clipGather_, resolve_, upsample_;
 };
 
 }  // namespace dvsgi::render

@@ -345,7 +345,7 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     if (voxelizer_) {
         const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
-                                f.reducedTrace() ? &f.traceSpecular : nullptr};
+                                f.reducedTrace() ? &f.traceSpecular : nullptr, f.turnedDiffuse};
         gather_->record(cmd, tracker_, in, out, settings_.gather, settings_.cones, t);
         recordTemporal(cmd);
     }

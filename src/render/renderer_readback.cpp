@@ -40,6 +40,7 @@ std::vector<MemoryItem> Renderer::memory() const {
         {"g-buffer", targets_->gbuffer.memoryBytes()},
         {"direct radiance", targets_->direct.memorySize() + targets_->visibility.memorySize()},
         {"cone-traced terms", targets_->diffuse.memorySize() + targets_->specular.memorySize() +
+                                  targets_->turnedDiffuse.memorySize() +
                                   (targets_->reducedTrace() ? targets_->traceDiffuse.memorySize() +
                                                                   targets_->traceSpecular.memorySize()
                                                             : 0)},

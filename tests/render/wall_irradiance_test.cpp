@@ -78,6 +78,7 @@ TEST_F(GpuTest, GatherFromAPerpendicularEmissiveWallAgainstItsClosedForm) {
     rs.voxelLight.bounces = 0;  // the floor is black: the gather is all there is
     rs.emitterLights = false;   // the wall's emission in the voxels, gathered by the cones
     rs.gather.traceScale = 1.0f;
+    rs.gather.spin = false;  // the paper's six cones, as sixConeAnswer turns them
     rs.hasVoxelBox = true;  // the whole wall inside the grid: 3.2 m, 5 cm voxels
     rs.voxelBoxMin = glm::vec3(-1.1f, -0.6f, -1.6f);
     rs.voxelBoxMax = glm::vec3(2.1f, 2.6f, 1.6f);

@@ -1,0 +1,34 @@
+// The six-cone set's interleaving resolved (render/gather.cpp,
+// cone_resolve.comp): bindings, push constants, workgroup size, the turns;
+// shared by C++ and GLSL.
+#ifndef DVSGI_SHARED_CONE_RESOLVE_PASS_H
+#define DVSGI_SHARED_CONE_RESOLVE_PASS_H
+
+#include "common.h"
+
+DVSGI_BEGIN
+
+// gather.comp turns the six cones about the normal by (x & 1) + 2 (y & 1)
+// steps of 72 / CONE_SPIN_STEPS degrees at trace pixel (x, y) (the five side
+// cones repeat every 72 degrees); every 2x2 block holds each turn once.
+DVSGI_CONST(uint, CONE_SPIN_STEPS, 4);
+DVSGI_FUNCTION float coneSpinTurn(int x, int y) {
+    return float((x & 1) + 2 * (y & 1)) / (5.0f * float(CONE_SPIN_STEPS));  // a fraction of a full turn
+}
+
+DVSGI_CONST(uint, BIND_RESOLVE_FRAME, 0);
+DVSGI_CONST(uint, BIND_RESOLVE_NORMAL, 1);
+DVSGI_CONST(uint, BIND_RESOLVE_DEPTH, 2);
+DVSGI_CONST(uint, BIND_RESOLVE_TRACED, 3);  // the gather's diffuse term, turned per pixel (RGBA16F)
+DVSGI_CONST(uint, BIND_RESOLVE_OUT, 4);     // the same resolved (RGBA16F)
+
+struct ConeResolvePush {
+    uvec4 sizes;  // x trace width, y trace height, z G-buffer width, w G-buffer height
+};
+DVSGI_CHECK_SIZE(ConeResolvePush, 16);
+
+DVSGI_CONST(uint, RESOLVE_GROUP, 8);
+
+DVSGI_END
+
+#endif

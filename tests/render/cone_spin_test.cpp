@@ -1,0 +1,110 @@
+// The six cones turned per pixel (GatherSettings::spin, gather.comp) and the
+// turns resolved (cone_resolve.comp): a black floor beside a wall that emits
+// toward it, where the six cones' answer depends on how they are turned.
+// Each turn is rendered alone (GatherSettings::fixedTurn), the four are
+// interleaved as the gather interleaves them, and the resolve's 3x3 tent
+// with its depth weights is applied on the CPU; the renderer's resolved
+// image must match it.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/gtc/constants.hpp>
+
+#include "gpu_fixture.h"
+#include "shared/composite_pass.h"
+#include "shared/cone_resolve_pass.h"
+
+namespace dvsgi::test {
+namespace {
+
+namespace sh = dvsgi::shader;
+
+constexpr uint32_t kSize = 96;
+
+scene::Scene wallScene() {
+    scene::Scene s;
+    addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.0f), 1.0f);
+    addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(1.0f)), glm::vec3(-1.0f, 1.0f, 0.0f), 1.0f,
+            glm::angleAxis(-glm::half_pi<float>(), glm::vec3(0, 0, 1)));  // normal +X
+    addTopDownCamera(s, 1.8f, glm::radians(60.0f));
+    return s;
+}
+
+render::RenderSettings settings(int fixedTurn) {
+    render::RenderSettings rs;
+    rs.width = rs.height = kSize;
+    rs.shadowMapSize = 256;
+    rs.voxels = 32;
+    rs.outputTerm = sh::TERM_IRRADIANCE;
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 0;
+    rs.emitterLights = false;  // the wall's emission in the voxels, gathered by the cones
+    rs.gather.traceScale = 1.0f;
+    rs.cones.coneSet = sh::CONE_SET_6;
+    rs.gather.spin = true;
+    rs.gather.fixedTurn = fixedTurn;
+    return rs;
+}
+
+class ConeSpin : public GpuTest {};
+
+TEST_F(ConeSpin, ResolvedTurnsMatchTheFourTurnsInterleavedAndFiltered) {
+    const scene::Scene s = wallScene();
+    const render::RenderSettings rs = settings(-1);
+    const image::ImageRGBA32F resolved = render(s, rs);
+    std::array<image::ImageRGBA32F, sh::CONE_SPIN_STEPS> turned;
+    for (uint32_t k = 0; k < sh::CONE_SPIN_STEPS; ++k) turned[k] = render(s, settings(int(k)));
+
+    // Each pixel's distance from the camera, as the resolve weighs it.
+    const scene::PlacedCamera cam = scene::placedCameras(s, scene::worldMatrices(s)).at(0);
+    const glm::vec3 eye(cam.world[3]);
+    auto distance = [&](int x, int y) { return glm::length(pixelOnPlane(s, rs, uint32_t(x), uint32_t(y), 0.0f) - eye); };
+    auto onFloor = [&](int x, int y) {
+        const glm::vec3 p = pixelOnPlane(s, rs, uint32_t(x), uint32_t(y), 0.0f);
+        return std::abs(p.x) < 0.9f && std::abs(p.z) < 0.9f;
+    };
+    auto interleaved = [&](int x, int y) { return turned[size_t((x & 1) + 2 * (y & 1))].at(uint32_t(x), uint32_t(y))[1]; };
+
+    double worstTurn = 0.0, worstResolve = 0.0, sumResolved = 0.0, sumTurns = 0.0;
+    int count = 0;
+    for (int y = 1; y + 1 < int(kSize); ++y)
+        for (int x = 1; x + 1 < int(kSize); ++x) {
+            bool inside = true;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) inside = inside && onFloor(x + dx, y + dy);
+            if (!inside) continue;
+            const float z = distance(x, y);
+            double sum = 0.0, wsum = 0.0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const double dz = std::abs(distance(x + dx, y + dy) - z) / z;
+                    const double w = double((2 - std::abs(dx)) * (2 - std::abs(dy))) / (1.0 + 100.0 * dz);
+                    sum += w * interleaved(x + dx, y + dy);
+                    wsum += w;
+                }
+            const double want = sum / wsum, got = resolved.at(uint32_t(x), uint32_t(y))[1];
+            const double first = turned[0].at(uint32_t(x), uint32_t(y))[1];
+            for (uint32_t k = 1; k < sh::CONE_SPIN_STEPS; ++k)
+                worstTurn = std::max(worstTurn, std::abs(double(turned[k].at(uint32_t(x), uint32_t(y))[1]) - first));
+            worstResolve = std::max(worstResolve, std::abs(got / want - 1.0));
+            sumResolved += got;
+            for (uint32_t k = 0; k < sh::CONE_SPIN_STEPS; ++k) sumTurns += turned[k].at(uint32_t(x), uint32_t(y))[1] / 4.0;
+            ++count;
+        }
+    worstTurn /= sumTurns / count;
+    std::printf("  %d floor pixels: the turns differ by up to %.1f %% of the mean; resolved against the CPU's "
+                "resolve: worst %.3f %%; resolved over the four turns' mean %.4f\n",
+                count, 100.0 * worstTurn, 100.0 * worstResolve, sumResolved / sumTurns);
+    ASSERT_GT(count, 2000);
+    // Measured on lavapipe: the turns differ by up to 63 % of the mean (so the
+    // turn takes effect), the resolve agrees to 0.097 % (half floats), and the
+    // resolved floor holds 0.9991 of the turns' mean light. Bounds 1.5x.
+    EXPECT_GT(worstTurn, 0.4);
+    EXPECT_LT(worstResolve, 0.0015);
+    EXPECT_NEAR(sumResolved / sumTurns, 1.0, 0.0015);
+}
+
+}  // namespace
+}  // namespace dvsgi::test
