@@ -26,6 +26,7 @@ struct ModelInputs {
     bool bounceRays = false;  // the bounce marches rays (--bounce-trace rays): three dispatches, and with
                               // bounces > 0 no filtering before the first
     bool temporal = false;  // the temporal accumulation of the indirect term runs (with voxels)
+    bool coneResolve = false;  // the six cones turned per pixel and resolved (--cone-spin on, --cones 6)
 };
 
 struct PassTraffic {

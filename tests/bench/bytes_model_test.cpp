@@ -101,6 +101,14 @@ TEST(BytesModel, TemporalIndirectRunsOnlyWhenOnAndReadsItsHistory) {
 // Issue #14's storage goal: at most 24 bytes per grid voxel at 256^3, mips
 // included, with the default slots and the voxel bounce's rays (the default;
 // their per-slot result counted). 22.98 with rays, 22.61 with cones.
+TEST(BytesModel, TurnedConesAddTheirResolve) {
+    ModelInputs in = handCase();
+    EXPECT_EQ(findPass(passTraffic(in), "cone set resolve"), nullptr);
+    in.coneResolve = true;
+    // 160x90 trace pixels: the turned term (8), normal (8) and depth (4) in, the resolved term (8) out.
+    expectPass(passTraffic(in), "cone set resolve", 14400 * (8 + 8 + 4), 14400 * 8);
+}
+
 TEST(BytesModel, RaysLeaveOutTheFilteringBeforeTheirBounce) {
     ModelInputs in = handCase();
     in.bounceRays = true;

@@ -365,9 +365,15 @@ TEST_F(ThinWallPixels, SlabAcrossTheLatticeIsMeasuredAndBounded) {
     // the shadowed side's spreads, 18.9 and 3.41, now measure the two layers'
     // leak against a right figure (4.21 and 1.43 with cones), and the bounds
     // are on the leak itself. Sunlit side: 1.39 (1.39 with cones).
-    EXPECT_LT(darkNear[0], 0.01);
+    // Since the six cones turn per pixel (--cone-spin, 2026-12-06) the resolve's
+    // 3x3 tent also blends floor pixels across the slab, which is under a
+    // pixel wide from above: the one layer's shadowed side 1-3 voxels away
+    // 0.0098-0.0109, the two layers' 0.064-0.118, 4-8 voxels away 0.035-0.037;
+    // sunlit side 1.35. Bounds 1.5x the one layer's and the far band's, 1.1x
+    // the two layers' near band.
+    EXPECT_LT(darkNear[0], 0.015);
     EXPECT_LT(darkNear[1], 0.13);
-    EXPECT_LT(darkFar[1], 0.034);
+    EXPECT_LT(darkFar[1], 0.055);
     EXPECT_LT(spreadLitNear, 1.55);
 }
 
