@@ -49,12 +49,21 @@ gpu::ImageDesc historyImageDesc(uint32_t slots) {
 
 static_assert(sh::BOUNCE_RAYS_SLOT_BYTES == 2 * sizeof(uint32_t), "tracedImageDesc's texel is RG32UI");
 
-gpu::ImageDesc tracedImageDesc(uint32_t slots) {
+namespace {
+
+// A storage image with one `format` texel per slot, laid out as the history.
+gpu::ImageDesc slotImageDesc(uint32_t slots, VkFormat format, const char* name) {
     gpu::ImageDesc d = historyImageDesc(slots);
-    d.format = VK_FORMAT_R32G32_UINT;
+    d.format = format;
     d.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-    d.name = "voxel bounce rays' light";
+    d.name = name;
     return d;
+}
+
+}  // namespace
+
+gpu::ImageDesc tracedImageDesc(uint32_t slots) {
+    return slotImageDesc(slots, VK_FORMAT_R32G32_UINT, "voxel bounce rays' light");
 }
 
 static_assert(sh::BOUNCE_RAY_NORMAL_SLOT_BYTES == sizeof(uint32_t), "rayNormalsImageDesc's texel is R32UI");
@@ -62,11 +71,7 @@ static_assert(3 * sh::RAY_NORMAL_BITS <= 32 && sh::RAY_NORMAL_SCALE < float(1u <
               "a packed ray normal's three axes fit one word");
 
 gpu::ImageDesc rayNormalsImageDesc(uint32_t slots) {
-    gpu::ImageDesc d = historyImageDesc(slots);
-    d.format = VK_FORMAT_R32_UINT;
-    d.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-    d.name = "voxel bounce rays' normals";
-    return d;
+    return slotImageDesc(slots, VK_FORMAT_R32_UINT, "voxel bounce rays' normals");
 }
 
 VkDeviceSize rayOccupancyBytes(uint32_t n) {
