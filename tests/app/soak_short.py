@@ -5,7 +5,7 @@ at 4 bounces, which would take 45 at this size and dominate the run), the
 validation layer on. No growth means: the device memory dvsgi holds is identical between
 the two reports compared (same settings, after the first cycle), nothing is
 left allocated once the last renderer is gone, and the resident set grows by
-less than 1 % between those reports. Also checks that the scene really moved
+less than 2 % between those reports. Also checks that the scene really moved
 (the output changes between reports of the same settings), that the
 soak's own failure exit is what the JSON says, and the report count.
 Usage: soak_short.py path/to/dvsgi"""
@@ -24,7 +24,7 @@ def check(name, ok, detail=""):
 
 out = os.path.join(TMP, "soak.json")
 args = [DVSGI, "soak", "--width", "32", "--height", "32", "--voxels", "32", "--shadow-map", "256",
-        "--soak-frames", "200", "--soak-every", "20", "--max-bounces", "4", "--soak-max-growth", "1",
+        "--soak-frames", "200", "--soak-every", "20", "--max-bounces", "4", "--soak-max-growth", "2",
         "--soak-out", out]
 # Without the validation layer: its synchronization validation keeps history
 # that grows the process by about 1.5 % over these 200 frames (measured), which
@@ -60,8 +60,12 @@ else:
           str(j["device_bytes_after_last_renderer"]))
     # dvsgi's own memory: RSS less the driver's JIT code (lavapipe's grows by about
     # 0.2 MiB per renderer; docs/RELIABILITY.md), which the soak reports apart.
+    # Measured 2026-12-06 on the 2-core machine, frames 120..200: +0.20 to +1.34 %
+    # with this code and with the code before it (ce837b5) alike, +1.49 % once
+    # under the parallel test suite; no run grows from one report to the next
+    # the way a leak would. Bound 1.5x the largest alone.
     rss = j["growth_percent"]["rss_excluding_jit_code"]
-    check("RSS growth without JIT code < 1 %%", rss < 1.0,
+    check("RSS growth without JIT code < 2 %%", rss < 2.0,
           "%.3f %% (with it %.3f %%; JIT code %+.2f MiB)" % (rss, j["growth_percent"]["rss"],
                                                            j["growth_percent"]["jit_code_bytes"] / 2**20))
     check("passed flag", j["passed"] is True, str(j["passed"]))
