@@ -46,8 +46,6 @@ layout(set = 0, binding = BIND_BOUNCE_TRACED, rg32ui) uniform uimage3D traced;
 #if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
 layout(set = 0, binding = BIND_BOUNCE_RAY_NORMALS, r32ui) uniform uimage3D rayNormals;
 layout(set = 0, binding = BIND_BOUNCE_RAY_OCCUPANCY, std430) buffer RayOccupancy { uint rayOccupancy[]; };
-#endif
-#if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
 VOXEL_INDEX_BLOCK(BIND_BOUNCE_INDEX, readonly);
 #endif
 layout(push_constant) uniform Push { BouncePush pc; };

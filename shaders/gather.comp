@@ -88,9 +88,7 @@ void main() {
     vec4 nr = texelFetch(gNormal, g, 0);
     vec3 N = normalize(nr.xyz);
     vec3 V = normalize(frame.cameraPos.xyz - P);
-    float turn = pc.flags.x == 0u ? 0.0
-               : pc.flags.x == 1u ? coneSpinTurn(px.x, px.y)
-                                  : float(pc.flags.x - 2u) / (5.0 * float(CONE_SPIN_STEPS));
+    float turn = pc.flags.x == 0u ? 0.0 : pc.flags.x == 1u ? coneSpinTurn(px.x, px.y) : coneTurn(pc.flags.x - 2u);
 #ifdef DVSGI_CLIPMAP
     // Near the face of the level the pixel starts at, the next level's
     // gather is blended in, so the start level changes without a seam.

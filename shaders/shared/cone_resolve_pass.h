@@ -12,9 +12,9 @@ DVSGI_BEGIN
 // steps of 72 / CONE_SPIN_STEPS degrees at trace pixel (x, y) (the five side
 // cones repeat every 72 degrees); every 2x2 block holds each turn once.
 DVSGI_CONST(uint, CONE_SPIN_STEPS, 4);
-DVSGI_FUNCTION float coneSpinTurn(int x, int y) {
-    return float((x & 1) + 2 * (y & 1)) / (5.0f * float(CONE_SPIN_STEPS));  // a fraction of a full turn
-}
+// Turn `step` as a fraction of a full turn.
+DVSGI_FUNCTION float coneTurn(uint step) { return float(step) / (5.0f * float(CONE_SPIN_STEPS)); }
+DVSGI_FUNCTION float coneSpinTurn(int x, int y) { return coneTurn(uint((x & 1) + 2 * (y & 1))); }
 
 DVSGI_CONST(uint, BIND_RESOLVE_FRAME, 0);
 DVSGI_CONST(uint, BIND_RESOLVE_NORMAL, 1);

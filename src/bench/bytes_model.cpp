@@ -4,6 +4,7 @@
 
 #include "shared/bounce_pass.h"
 #include "shared/voxel_data.h"
+#include "vxgi/bounce.h"
 #include "vxgi/volumes.h"
 
 namespace dvsgi::bench {
@@ -110,7 +111,7 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
             const uint64_t bitWords = occupied * sh::RAY_OCCUPANCY_LEVELS * sizeof(uint32_t);
             bounce.readBytes += bounces * bitWords;
             bounce.writtenBytes += bounces * (occupied * (kRayResultBytes + kRayNormalBytes) + bitWords +
-                                              sh::rayOccupancyOffset(in.voxels, sh::RAY_OCCUPANCY_LEVELS) * 4);
+                                              vxgi::rayOccupancyBytes(in.voxels));
         }
         out.push_back(bounce);
         PassTraffic again = filtering(in.voxels, occupied, "voxel filtering (bounce)");

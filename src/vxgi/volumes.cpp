@@ -11,6 +11,7 @@
 #include "shared/voxel_data.h"
 #include "shared/bounce_pass.h"
 #include "shared/voxel_list_pass.h"
+#include "vxgi/bounce.h"
 #include "vxgi/voxel_list.h"
 
 namespace dvsgi::vxgi {
@@ -84,8 +85,7 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRa
         items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * sh::BOUNCE_RAYS_SLOT_BYTES});
         items.push_back({"voxel bounce rays' normals (per slot)", "R32_UINT",
                          uint64_t(slots) * sh::BOUNCE_RAY_NORMAL_SLOT_BYTES});
-        items.push_back({"voxel bounce rays' occupancy bits", "uint32 buffer",
-                         uint64_t(sh::rayOccupancyOffset(n, sh::RAY_OCCUPANCY_LEVELS)) * 4});
+        items.push_back({"voxel bounce rays' occupancy bits", "uint32 buffer", rayOccupancyBytes(n)});
     }
     return items;
 }
