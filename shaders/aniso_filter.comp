@@ -40,22 +40,45 @@ layout(push_constant) uniform Push { AnisoPush pc; };
 #if defined(DVSGI_TWO_SIDED) || defined(DVSGI_BASE_LEVEL)
 layout(set = 0, binding = BIND_ANISO_GRID) uniform Grid { VoxelGrid grid; };
 VOXEL_LIST_BLOCK(BIND_ANISO_LIST, readonly);
+VOXEL_INDEX_BLOCK(BIND_ANISO_INDEX, readonly);
+layout(set = 0, binding = BIND_ANISO_ACCUM, r32f) uniform readonly image3D accum;
 #include "lib/voxel_window.glsl"
 #include "lib/voxel_list_dispatch.glsl"
+#include "lib/voxel_index.glsl"
+#include "lib/voxel_attributes.glsl"
+
+// A one-sided voxel seen from behind shows no light but still blocks: its
+// light leaves its front, and behind a surface lies the solid it bounds or
+// the surface's other face, which is a voxel of its own or makes this one
+// two-sided. Shown the same every way, a lit face reached cones that could
+// only have met it from behind: in a cell holding a block's lit top but not
+// its bottom, rays travelling up saw the top, and the per-pixel gather
+// over-counted beside such blocks (docs/quality.md, "A voxel seen from
+// behind"). `n`: the voxel's mean normal (0 where its faces cancel: shown
+// every way).
+float seenFront(vec3 n, uint dir) {
+    float along = (dir % 2u == 0u ? -1.0 : 1.0) * n[dir / 2u];  // dot(n, travel direction)
+    return clamp((ANISO_BACK_FADE_END - along) / (ANISO_BACK_FADE_END - ANISO_BACK_FADE_START), 0.0, 1.0);
+}
+
+// The mean normal of occupied voxel p (0 for an empty one).
+vec3 normalAt(ivec3 p) {
+    uint slot = voxelSlotAt(p);
+    return slot == 0u ? vec3(0.0) : voxelNormal(slot - 1u);
+}
 #endif
 
 #ifdef DVSGI_TWO_SIDED
-VOXEL_INDEX_BLOCK(BIND_ANISO_INDEX, readonly);
 layout(set = 0, binding = BIND_ANISO_DIRECT, rgba16f) uniform readonly image3D direct;
 layout(set = 0, binding = BIND_ANISO_SIDES, rgba32ui) uniform readonly uimage3D sides;
 
-#include "lib/voxel_index.glsl"
 #include "lib/voxel_sides.glsl"
 
 // The cell's eight voxels as the six directions see them: the radiance, and
 // for a two-sided voxel its axis and its two sides (+axis, -axis).
 vec4 children[8];
-int childAxis[8];  // -1: the same every way
+vec3 childNormal[8];
+int childAxis[8];  // -1: one-sided
 vec3 childSide[8][2];
 
 // The side code of voxel p and its slot + 1 (0: empty).
@@ -69,6 +92,7 @@ void loadChildren(ivec3 base) {
         ivec3 p = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
         children[i] = imageLoad(source, p);
         childAxis[i] = -1;
+        childNormal[i] = children[i].a > 0.0 ? normalAt(p) : vec3(0.0);
         uint slot;
         uint code = marksTwoSided(children[i].a) ? sideCodeAt(p, slot) : SIDE_ONE;
         if (code == SIDE_ONE) continue;
@@ -85,17 +109,25 @@ vec4 child(uint dir, ivec3 p) {
     int i = (p.x & 1) + 2 * (p.y & 1) + 4 * (p.z & 1);
     // Travelling toward -axis (even dir) a ray meets the +axis side.
     if (childAxis[i] == int(dir / 2u)) return vec4(childSide[i][dir % 2u == 0u ? 0 : 1], 1.0);
-    return children[i];
+    return vec4(children[i].rgb * seenFront(childNormal[i], dir), children[i].a);
 }
 #elif defined(DVSGI_BASE_LEVEL)
-// The cell's eight voxels, loaded once for the six directions.
+// The cell's eight voxels and their normals, loaded once for the six directions.
 vec4 children[8];
+vec3 childNormal[8];
 
 void loadChildren(ivec3 base) {
-    for (int i = 0; i < 8; ++i) children[i] = imageLoad(source, base + ivec3(i & 1, (i >> 1) & 1, i >> 2));
+    for (int i = 0; i < 8; ++i) {
+        ivec3 p = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        children[i] = imageLoad(source, p);
+        childNormal[i] = children[i].a > 0.0 ? normalAt(p) : vec3(0.0);
+    }
 }
 
-vec4 child(uint dir, ivec3 p) { return children[(p.x & 1) + 2 * (p.y & 1) + 4 * (p.z & 1)]; }
+vec4 child(uint dir, ivec3 p) {
+    int i = (p.x & 1) + 2 * (p.y & 1) + 4 * (p.z & 1);
+    return vec4(children[i].rgb * seenFront(childNormal[i], dir), children[i].a);
+}
 #else
 // The levels above the base are a variant of their own rather than a branch
 // on the level: llvmpipe took both loads of such a branch for every child.

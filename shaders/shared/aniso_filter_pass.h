@@ -15,11 +15,19 @@ DVSGI_CONST(uint, BIND_ANISO_TARGET_DIRS, 2); // the volumes' level written
 // The base level and the two-sided pass run over the occupied-voxel list:
 DVSGI_CONST(uint, BIND_ANISO_GRID, 3);    // VoxelGrid (the list's and the index's toroidal addressing)
 DVSGI_CONST(uint, BIND_ANISO_LIST, 7);    // occupied-voxel list: one invocation per entry
+DVSGI_CONST(uint, BIND_ANISO_INDEX, 4);   // slot index
 // The two-sided pass (aniso_filter.comp with DVSGI_TWO_SIDED) only: which voxels
 // are two-sided and their light per side.
-DVSGI_CONST(uint, BIND_ANISO_INDEX, 4);   // slot index
 DVSGI_CONST(uint, BIND_ANISO_DIRECT, 5);  // per-slot direct light: a = 1 + side code
 DVSGI_CONST(uint, BIND_ANISO_SIDES, 6);   // per-slot side light (lib/voxel_sides.glsl)
+// Both passes over level 0: the voxels' attributes, for their mean normals.
+DVSGI_CONST(uint, BIND_ANISO_ACCUM, 8);
+
+// A one-sided voxel shows its light to the rays that meet its front: fully
+// while the travel direction t has dot(n, t) <= ANISO_BACK_FADE_START (seen
+// face on, or edge on), none from ANISO_BACK_FADE_END (seen from behind).
+DVSGI_CONST(float, ANISO_BACK_FADE_START, 0.1);
+DVSGI_CONST(float, ANISO_BACK_FADE_END, 0.35);
 
 struct AnisoPush {
     uvec4 sizes;  // x target size (voxels per edge), yzw unused (the base level is a variant of its own)

@@ -39,10 +39,11 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kAniso), layout, "anisotropic filtering");
     layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
-                                                   {sh::BIND_ANISO_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}});
+                                                   {sh::BIND_ANISO_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                                                   {sh::BIND_ANISO_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                                                   {sh::BIND_ANISO_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}});
     base_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoBase), layout, "anisotropic filtering (base level)");
-    layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                                                   {sh::BIND_ANISO_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+    layout.bindings.insert(layout.bindings.end(), {{sh::BIND_ANISO_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                                                    {sh::BIND_ANISO_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}});
     twoSided_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoTwoSided), layout, "anisotropic filtering (two-sided voxels)");
 }
@@ -73,15 +74,27 @@ void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const V
 
 // What both passes over level 0 bind: the radiance, level 0 itself (also as
 // the unused upper-level source, which needs a valid view; the passes declare
-// it read as well as written), the grid and the list.
+// it read as well as written), the grid, the list, and the slot index and
+// attributes for the voxels' normals.
 gpu::Descriptors AnisoFilterPass::levelZeroBindings(const VoxelVolumes& v) {
     gpu::Descriptors d;
     d.storageImage(sh::BIND_ANISO_SOURCE, v.radiance.view())
         .storageImage(sh::BIND_ANISO_SOURCE_DIRS, v.directional.mipView(0))
         .storageImage(sh::BIND_ANISO_TARGET_DIRS, v.directional.mipView(0))
         .uniformBuffer(sh::BIND_ANISO_GRID, v.gridBuffer.handle())
-        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle());
+        .storageBuffer(sh::BIND_ANISO_LIST, v.list.handle())
+        .storageBuffer(sh::BIND_ANISO_INDEX, v.index.handle())
+        .storageImage(sh::BIND_ANISO_ACCUM, v.accum.view());
     return d;
+}
+
+// What both passes over level 0 read.
+void AnisoFilterPass::readLevelZero(gpu::Tracker& tracker, const VoxelVolumes& v) {
+    tracker.image(v.radiance, gpu::use::ComputeRead)
+        .image(v.accum, gpu::use::ComputeRead)
+        .buffer(v.index, gpu::use::BufferComputeRead)
+        .buffer(v.list, gpu::use::IndirectComputeRead)
+        .imageMip(v.directional, 0, gpu::use::ComputeReadWrite);
 }
 
 // One invocation per list entry of `pipeline` over level 0.
@@ -102,24 +115,17 @@ void AnisoFilterPass::recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, con
     const VkClearColorValue zero{};
     const VkImageSubresourceRange mip0{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, v.directional.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &mip0);
-    tracker.image(v.radiance, gpu::use::ComputeRead)
-        .buffer(v.list, gpu::use::IndirectComputeRead)
-        .imageMip(v.directional, 0, gpu::use::ComputeReadWrite)
-        .flush(cmd);
+    readLevelZero(tracker, v);
+    tracker.flush(cmd);
     dispatchOverLevelZero(cmd, base_, levelZeroBindings(v), v);
 }
 
 // The cells holding two-sided voxels, again (aniso_filter.comp, DVSGI_TWO_SIDED).
 void AnisoFilterPass::recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
-    tracker.image(v.direct, gpu::use::ComputeRead)
-        .image(v.sides, gpu::use::ComputeRead)
-        .buffer(v.index, gpu::use::BufferComputeRead)
-        .buffer(v.list, gpu::use::IndirectComputeRead)
-        .imageMip(v.directional, 0, gpu::use::ComputeReadWrite)
-        .flush(cmd);
+    readLevelZero(tracker, v);
+    tracker.image(v.direct, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead).flush(cmd);
     gpu::Descriptors bindings = levelZeroBindings(v);
-    bindings.storageBuffer(sh::BIND_ANISO_INDEX, v.index.handle())
-        .storageImage(sh::BIND_ANISO_DIRECT, v.direct.view())
+    bindings.storageImage(sh::BIND_ANISO_DIRECT, v.direct.view())
         .storageImage(sh::BIND_ANISO_SIDES, v.sides.view());
     dispatchOverLevelZero(cmd, twoSided_, bindings, v);
 }

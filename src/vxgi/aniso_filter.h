@@ -25,6 +25,7 @@ public:
 
 private:
     static gpu::Descriptors levelZeroBindings(const VoxelVolumes& volumes);
+    static void readLevelZero(gpu::Tracker& tracker, const VoxelVolumes& volumes);
     void dispatchOverLevelZero(VkCommandBuffer cmd, const gpu::Pipeline& pipeline, const gpu::Descriptors& bindings,
                                const VoxelVolumes& volumes) const;
     void recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes) const;

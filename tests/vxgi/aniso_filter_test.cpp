@@ -10,6 +10,7 @@
 #include "gpu/transfer.h"
 #include "gpu_fixture.h"
 #include "light_helpers.h"
+#include "shared/aniso_filter_pass.h"
 #include "vxgi/aniso_filter.h"
 #include "vxgi/voxel_storage_io.h"
 
@@ -44,24 +45,38 @@ Rgba16Volume randomRadiance(uint32_t n, uint32_t seed) {
 // Volumes with a slot for every voxel, so any radiance can be listed.
 vxgi::VoxelVolumes volumesFor(uint32_t n) { return vxgi::VoxelVolumes(context(), grid(n), n * n * n); }
 
+// A voxel's mean normal, as voxelization accumulates it (one fragment).
+struct VoxelNormal {
+    glm::ivec3 voxel;
+    glm::vec3 n;
+};
+
 // What voxelization leaves for `radiance`: every voxel with opacity occupied
 // and in the list (the filter's base level runs over it), each one-sided in
-// its direct light's side code, so the two-sided pass leaves it alone.
-void uploadOccupancy(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance) {
+// its direct light's side code, so the two-sided pass leaves it alone. Their
+// normals cancel (shown every way) but those `normals` gives.
+void uploadOccupancy(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance,
+                     const std::vector<VoxelNormal>& normals = {}) {
     vxgi::DenseAttributes a(radiance.n);
     for (int z = 0; z < int(radiance.n); ++z)
         for (int y = 0; y < int(radiance.n); ++y)
             for (int x = 0; x < int(radiance.n); ++x)
                 if (radiance.at(x, y, z).a > 0.0f) a.at(x, y, z, shader::CH_COUNT) = 1.0f;
+    for (const VoxelNormal& v : normals)
+        for (int axis = 0; axis < 3; ++axis) {
+            const float c = v.n[axis];
+            a.at(v.voxel.x, v.voxel.y, v.voxel.z, shader::CH_NORMAL_POS_X + 2 * axis + (c < 0.0f ? 1 : 0)) = c * c;
+        }
     vxgi::uploadAttributes(context(), volumes, a);
     const std::vector<uint64_t> oneSided(volumes.slots, glm::packHalf4x16(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)));
     gpu::uploadImage(context(), volumes.direct, oneSided.data(), oneSided.size() * sizeof(uint64_t),
                      gpu::use::ComputeReadWrite);
 }
 
-void filter(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance) {
+void filter(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance,
+            const std::vector<VoxelNormal>& normals = {}) {
     uploadRgba16(volumes.radiance, radiance);
-    uploadOccupancy(volumes, radiance);
+    uploadOccupancy(volumes, radiance, normals);
     const vxgi::AnisoFilterPass pass(context());
     gpu::Tracker tracker = volumeTracker(volumes);
     context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, nullptr, "test filter"); });
@@ -200,6 +215,42 @@ TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
     // Level 1 of +X reads level 0 of +X (one filled column of four, in front).
     const glm::vec4 l1 = readDirectional(volumes, 1, 1).at(0, 0, 0);
     expectVec(l1, glm::vec4(0.5f, 0.5f, 0.0f, 1.0f) * 0.0625f, "+X level 1");
+}
+
+// A one-sided voxel seen from behind blocks but shows no light: a wall in two
+// voxel layers, its dark face's voxel at x = 0 (normal -x) and its lit face's
+// at x = 1 (normal +x), each alone in its column along y and z, and a tilted
+// voxel at x = 2 whose normal is half way through the fade for rays
+// travelling +x (shader::ANISO_BACK_FADE_*).
+TEST_F(AnisoFilter, AVoxelSeenFromBehindBlocksButShowsNoLight) {
+    constexpr uint32_t kN = 16;
+    const vxgi::VoxelVolumes volumes = volumesFor(kN);
+    Rgba16Volume radiance;
+    radiance.n = kN;
+    radiance.texels.assign(size_t(kN) * kN * kN, glm::vec4(0.0f));
+    radiance.at(0, 0, 0) = glm::vec4(0.125f, 0.0f, 0.0f, 1.0f);
+    radiance.at(1, 0, 0) = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
+    radiance.at(2, 0, 0) = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
+    const float half = 0.5f * (shader::ANISO_BACK_FADE_START + shader::ANISO_BACK_FADE_END);
+    const glm::vec3 tilted(half, std::sqrt(1.0f - half * half), 0.0f);
+    filter(volumes, radiance, {{{0, 0, 0}, {-1, 0, 0}}, {{1, 0, 0}, {1, 0, 0}}, {{2, 0, 0}, tilted}});
+    auto level0 = [&](int dir, int cell) { return readDirectional(volumes, uint32_t(dir), 0).at(cell, 0, 0); };
+    auto expectVec = [](glm::vec4 got, glm::vec4 want, const char* what) {
+        for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], 1e-3f) << what << " channel " << c;
+    };
+    // Travelling +X the ray meets the dark face; the lit one behind it is
+    // hidden whichever way it shows.
+    expectVec(level0(1, 0), glm::vec4(0.125f, 0.0f, 0.0f, 1.0f) * 0.25f, "+X, the wall");
+    // Travelling -X the ray meets the lit face.
+    expectVec(level0(0, 0), glm::vec4(0.0f, 1.0f, 0.0f, 1.0f) * 0.25f, "-X, the wall");
+    // Along y and z both faces are seen edge on and show their light.
+    for (int dir = 2; dir < 6; ++dir) expectVec(level0(dir, 0), glm::vec4(0.125f, 1.0f, 0.0f, 2.0f) * 0.25f, "y/z");
+    // The tilted voxel: half its light travelling +X, all of it travelling -X
+    // and -Y, none travelling +Y (dot(n, +y) = 0.97).
+    expectVec(level0(1, 1), glm::vec4(0.0f, 0.0f, 0.5f, 1.0f) * 0.25f, "+X, tilted");
+    expectVec(level0(0, 1), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f) * 0.25f, "-X, tilted");
+    expectVec(level0(2, 1), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f) * 0.25f, "-Y, tilted");
+    expectVec(level0(3, 1), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) * 0.25f, "+Y, tilted");
 }
 
 }  // namespace
