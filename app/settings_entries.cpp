@@ -389,6 +389,12 @@ std::vector<Setting> imageAndVoxels() {
                      kAll, kFrame},
                     FIELD(settings.voxelLight.normalWeighted)),
              "off"),
+        with(toggle({"voxel-backs-dark", kVoxelLight, "on|off", "",
+                     "a one-sided voxel seen from behind shows cones no light but still blocks them (off: its light "
+                     "every way, as the paper filters)",
+                     kAll, kFrame},
+                    FIELD(settings.voxelLight.backsDark)),
+             "off"),
         with(choice({"voxel-occlusion", kVoxelLight, "M", "",
                      "occlusion of lights at voxels for all lights: shadowmap, raycast (hard), soft (raycast, "
                      "nu += (1-nu) kappa / t), none; per-light: each light's own mode (shadowmap unless "

@@ -61,10 +61,22 @@ float seenFront(vec3 n, uint dir) {
     return clamp((ANISO_BACK_FADE_END - along) / (ANISO_BACK_FADE_END - ANISO_BACK_FADE_START), 0.0, 1.0);
 }
 
-// The mean normal of occupied voxel p (0 for an empty one).
+// The direction of occupied voxel p's mean normal (voxelNormal without the
+// fragment count, which the normalization cancels: six reads, not seven), 0
+// for an empty voxel, and for every voxel when the voxels show their light
+// every way (pc.sizes.y = 0).
 vec3 normalAt(ivec3 p) {
+    if (pc.sizes.y == 0u) return vec3(0.0);
     uint slot = voxelSlotAt(p);
-    return slot == 0u ? vec3(0.0) : voxelNormal(slot - 1u);
+    if (slot == 0u) return vec3(0.0);
+    slot -= 1u;
+    vec3 pos = vec3(voxelChannel(slot, CH_NORMAL_POS_X), voxelChannel(slot, CH_NORMAL_POS_Y),
+                    voxelChannel(slot, CH_NORMAL_POS_Z));
+    vec3 neg = vec3(voxelChannel(slot, CH_NORMAL_NEG_X), voxelChannel(slot, CH_NORMAL_NEG_Y),
+                    voxelChannel(slot, CH_NORMAL_NEG_Z));
+    vec3 n = sqrt(pos) - sqrt(neg);
+    float len = length(n);
+    return len > 1e-6 ? n / len : vec3(0.0);
 }
 #endif
 

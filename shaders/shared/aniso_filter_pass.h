@@ -30,7 +30,8 @@ DVSGI_CONST(float, ANISO_BACK_FADE_START, 0.1);
 DVSGI_CONST(float, ANISO_BACK_FADE_END, 0.35);
 
 struct AnisoPush {
-    uvec4 sizes;  // x target size (voxels per edge), yzw unused (the base level is a variant of its own)
+    uvec4 sizes;  // x target size (voxels per edge); y (passes over level 0) 1: a voxel seen from behind
+                  // shows no light (seenFront); zw unused
 };
 DVSGI_CHECK_SIZE(AnisoPush, 16);
 

@@ -32,6 +32,7 @@ constexpr uint64_t kRayResultBytes = sh::BOUNCE_RAYS_SLOT_BYTES;  // the bounce'
 // The rays' normals: the fragment count and six normal weights in, one packed word per slot out.
 constexpr uint64_t kRayNormalAttributeBytes = 7 * 4;
 constexpr uint64_t kRayNormalBytes = sh::BOUNCE_RAY_NORMAL_SLOT_BYTES;
+constexpr uint64_t kNormalWeightBytes = 6 * 4;  // the six normal weights alone (the filter's seenFront)
 
 uint64_t cube(uint64_t s) { return s * s * s; }
 
@@ -40,10 +41,13 @@ uint64_t cube(uint64_t s) { return s * s * s; }
 // reads; the empty voxels beside them in their cells are not counted), level
 // l > 0 reads level l - 1 of each of the six volumes; every level of the six
 // is written (level 0 by its clear and the occupied cells' composites, counted once).
-PassTraffic filtering(uint32_t n, uint64_t occupied, const char* name) {
+// With `backsDark` level 0 also reads each listed voxel's index word and its
+// six normal weights.
+PassTraffic filtering(uint32_t n, uint64_t occupied, bool backsDark, const char* name) {
     PassTraffic p{name};
     const uint32_t levels = vxgi::directionalMipCount(n);
-    p.readBytes = occupied * (kListEntryBytes + kVoxelLightBytes);
+    p.readBytes = occupied * (kListEntryBytes + kVoxelLightBytes +
+                              (backsDark ? kIndexBytes + kNormalWeightBytes : 0));
     for (uint32_t l = 0; l < levels; ++l) {
         const uint64_t target = cube(std::max(uint64_t(n / 2) >> l, uint64_t(1)));
         p.writtenBytes += 6 * target * kVoxelLightBytes;
@@ -95,7 +99,7 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
                        occupied * 2 * kVoxelLightBytes});
         // Rays read no filtered light: with a ray bounce after it, the voxel
         // light is not filtered until that bounce has run.
-        if (!(in.bounceRays && bounces > 0)) out.push_back(filtering(in.voxels, occupied, "voxel filtering"));
+        if (!(in.bounceRays && bounces > 0)) out.push_back(filtering(in.voxels, occupied, in.backsDark, "voxel filtering"));
         // Cone and ray samples are not counted: the bytes are those of the
         // voxel's own attributes, direct light and result (with rays, also
         // the list and attributes read again by the shading dispatch, the
@@ -114,7 +118,7 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
                                               vxgi::rayOccupancyBytes(in.voxels));
         }
         out.push_back(bounce);
-        PassTraffic again = filtering(in.voxels, occupied, "voxel filtering (bounce)");
+        PassTraffic again = filtering(in.voxels, occupied, in.backsDark, "voxel filtering (bounce)");
         again.readBytes *= bounces;
         again.writtenBytes *= bounces;
         out.push_back(again);

@@ -27,6 +27,7 @@ struct ModelInputs {
                               // bounces > 0 no filtering before the first
     bool temporal = false;  // the temporal accumulation of the indirect term runs (with voxels)
     bool coneResolve = false;  // the six cones turned per pixel and resolved (--cone-spin on, --cones 6)
+    bool backsDark = false;    // the filter reads the voxels' normals (--voxel-backs-dark on)
 };
 
 struct PassTraffic {

@@ -375,11 +375,7 @@ void Renderer::recordTemporal(VkCommandBuffer cmd) {
 // light on from the old volumes, one bounce per frame: it settles over about
 // as many frames as converging took bounces, and the indirect term's history
 // stays dropped that long (tests/render/temporal_renderer_test.cpp).
-uint32_t Renderer::lightSettleFrames() const {
-    const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
-    if (!voxelizer_ || !haveHistory_ || vl.bounceMode == vxgi::BounceMode::Fixed) return 1;
-    return convergedBounces_ ? convergedBounces_ : vl.maxBounces;
-}
+uint32_t Renderer::lightSettleFrames() const { return voxelizer_ && haveHistory_ ? settleFrames() : 1u; }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const {
     const FrameTargets& f = *targets_;
@@ -535,7 +531,7 @@ bool Renderer::applySettings(const RenderSettings& s) {
                        o.softKappa != n.softKappa || o.bounceMode != n.bounceMode || o.bounces != n.bounces ||
                        o.convergence != n.convergence || o.maxBounces != n.maxBounces ||
                        o.bounceStepFactor != n.bounceStepFactor || o.bounceTrace != n.bounceTrace ||
-                       o.bounceRays != n.bounceRays || oc.stepFactor != nc.stepFactor ||
+                       o.bounceRays != n.bounceRays || o.backsDark != n.backsDark || oc.stepFactor != nc.stepFactor ||
                        oc.minStepVoxels != nc.minStepVoxels || oc.maxDistance != nc.maxDistance ||
                        oc.firstSampleVoxels != nc.firstSampleVoxels || oc.clearance != nc.clearance ||
                        s.shadows != settings_.shadows || s.normalOffsetTexels != settings_.normalOffsetTexels ||

@@ -220,7 +220,8 @@ private:
     glm::mat4 viewProjection() const;  // of the internal image (output x supersample)
     void recordCameraGBuffer(VkCommandBuffer cmd);
     uint64_t gbufferTriangles_ = 0;  // of the last recordCameraGBuffer
-    uint32_t lightSettleFrames() const;
+    uint32_t settleFrames() const;       // frames the light takes to settle after a change (renderer_voxel_history.cpp)
+    uint32_t lightSettleFrames() const;  // settleFrames(), or 1 before any light to settle
     double bounceChange() const;
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
     bool growVoxelSlots();       // after a voxelization that ran out of slots: bigger volumes

@@ -161,7 +161,7 @@ void Renderer::recordLevels(VkCommandBuffer cmd, const char* filterTimer,
         }
         pass(l, *levels[l]);
         if (!filter && clip_.empty()) continue;
-        aniso_->record(cmd, tracker_, *levels[l], timers_.get(), filterTimer);
+        aniso_->record(cmd, tracker_, *levels[l], settings_.voxelLight.backsDark, timers_.get(), filterTimer);
         if (clip_.empty()) continue;
         gpu::GpuTimerScope scope(timers_.get(), cmd, "clipmap atlas copy");
         vxgi::recordAtlasCopy(cmd, tracker_, *levels[l], uint32_t(l), *atlases_);

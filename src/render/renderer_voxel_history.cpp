@@ -13,17 +13,22 @@
 namespace dvsgi::render {
 
 // After a change the light settles over about as many feedback frames as
-// converging took bounces (all of --max-bounces before any frame converged);
-// what is left after that is still a few per cent of the indirect light, so
-// the blend waits twice as long, and the stale light goes as fast as without
-// it (test Converge/SwitchedOff.*/Blended). Fixed frames add no feedback.
-void Renderer::dropVoxelHistory() {
+// converging took bounces (all of --max-bounces before any frame converged),
+// but converging stopped once a bounce added a fraction of a per cent of the
+// light, while stale light starts from all of the old indirect light: after
+// that many frames a few per cent of it is left. So averages over frames (the
+// voxels' reflected light, the pixels' indirect term) wait twice as long, and
+// the stale light goes as fast as without them (tests Converge/SwitchedOff.*,
+// Clipmap.SwitchedOffLightLeavesNoGhost). Fixed frames add no feedback.
+uint32_t Renderer::settleFrames() const {
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
-    const uint32_t settle = vl.bounceMode == vxgi::BounceMode::Fixed ? 1u
-                            : convergedBounces_                   ? 2 * convergedBounces_
-                                                                  : vl.maxBounces;
+    if (vl.bounceMode == vxgi::BounceMode::Fixed) return 1u;
+    return convergedBounces_ ? 2 * convergedBounces_ : vl.maxBounces;
+}
+
+void Renderer::dropVoxelHistory() {
     lastHistoryTag_ = 0;
-    historyHold_ = std::max(historyHold_, settle);
+    historyHold_ = std::max(historyHold_, settleFrames());
 }
 
 bool Renderer::blendsVoxelRadiance() const {

@@ -48,11 +48,11 @@ AnisoFilterPass::AnisoFilterPass(const gpu::Context& ctx) : ctx_(ctx) {
     twoSided_ = gpu::Pipeline(ctx, gpu::Spirv(kAnisoTwoSided), layout, "anisotropic filtering (two-sided voxels)");
 }
 
-void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+void AnisoFilterPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, bool backsDark,
                              gpu::GpuTimers* timers, const char* timerName) const {
     gpu::GpuTimerScope timer(timers, cmd, timerName);
-    recordBase(cmd, tracker, v);
-    recordTwoSided(cmd, tracker, v);
+    recordBase(cmd, tracker, v, backsDark);
+    recordTwoSided(cmd, tracker, v, backsDark);
     for (uint32_t level = 1; level < v.directionalMips; ++level) {
         // Each level reads the one below it.
         tracker.imageMip(v.directional, level - 1, gpu::use::ComputeRead);
@@ -99,10 +99,11 @@ void AnisoFilterPass::readLevelZero(gpu::Tracker& tracker, const VoxelVolumes& v
 
 // One invocation per list entry of `pipeline` over level 0.
 void AnisoFilterPass::dispatchOverLevelZero(VkCommandBuffer cmd, const gpu::Pipeline& pipeline,
-                                            const gpu::Descriptors& bindings, const VoxelVolumes& v) const {
+                                            const gpu::Descriptors& bindings, const VoxelVolumes& v,
+                                            bool backsDark) const {
     gpu::bind(cmd, pipeline);
     bindings.push(ctx_, cmd, pipeline);
-    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, 0u, 0u, 0u)};
+    const sh::AnisoPush push{glm::uvec4(v.grid.n / 2, backsDark ? 1u : 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }
@@ -110,24 +111,26 @@ void AnisoFilterPass::dispatchOverLevelZero(VkCommandBuffer cmd, const gpu::Pipe
 // The base level: cleared, then each cell that holds an occupied voxel
 // composited once, by the cell's first occupied voxel in the list
 // (aniso_filter.comp, DVSGI_BASE_LEVEL).
-void AnisoFilterPass::recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
+void AnisoFilterPass::recordBase(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                                 bool backsDark) const {
     tracker.imageMip(v.directional, 0, gpu::use::ClearGeneral, true).flush(cmd);
     const VkClearColorValue zero{};
     const VkImageSubresourceRange mip0{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, v.directional.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &mip0);
     readLevelZero(tracker, v);
     tracker.flush(cmd);
-    dispatchOverLevelZero(cmd, base_, levelZeroBindings(v), v);
+    dispatchOverLevelZero(cmd, base_, levelZeroBindings(v), v, backsDark);
 }
 
 // The cells holding two-sided voxels, again (aniso_filter.comp, DVSGI_TWO_SIDED).
-void AnisoFilterPass::recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v) const {
+void AnisoFilterPass::recordTwoSided(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                                     bool backsDark) const {
     readLevelZero(tracker, v);
     tracker.image(v.direct, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead).flush(cmd);
     gpu::Descriptors bindings = levelZeroBindings(v);
     bindings.storageImage(sh::BIND_ANISO_DIRECT, v.direct.view())
         .storageImage(sh::BIND_ANISO_SIDES, v.sides.view());
-    dispatchOverLevelZero(cmd, twoSided_, bindings, v);
+    dispatchOverLevelZero(cmd, twoSided_, bindings, v, backsDark);
 }
 
 }  // namespace dvsgi::vxgi

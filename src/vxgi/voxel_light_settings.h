@@ -56,6 +56,10 @@ struct VoxelLightSettings {
     // the new value is taken as it is, when lights, static geometry or
     // settings change and for voxels that were not there last frame.
     float temporalAlpha = 1.0f;
+    // The directional volumes show a one-sided voxel's light only to rays that
+    // meet its front (aniso_filter.comp, seenFront); off: every way, as the
+    // paper filters (docs/quality.md, "A voxel seen from behind").
+    bool backsDark = true;
 };
 
 }  // namespace dvsgi::vxgi

@@ -109,6 +109,16 @@ TEST(BytesModel, TurnedConesAddTheirResolve) {
     expectPass(passTraffic(in), "cone set resolve", 14400 * (8 + 8 + 4), 14400 * 8);
 }
 
+TEST(BytesModel, DarkBacksReadTheVoxelsNormalsInTheFilter) {
+    ModelInputs in = handCase();
+    const PassTraffic lit = *findPass(passTraffic(in), "voxel filtering (bounce)");
+    in.backsDark = true;
+    const PassTraffic dark = *findPass(passTraffic(in), "voxel filtering (bounce)");
+    // Per listed voxel: its index word and six normal weights.
+    EXPECT_EQ(dark.readBytes - lit.readBytes, in.occupiedVoxels * (4 + 24));
+    EXPECT_EQ(dark.writtenBytes, lit.writtenBytes);
+}
+
 TEST(BytesModel, RaysLeaveOutTheFilteringBeforeTheirBounce) {
     ModelInputs in = handCase();
     in.bounceRays = true;

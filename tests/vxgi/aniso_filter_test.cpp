@@ -74,12 +74,12 @@ void uploadOccupancy(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radi
 }
 
 void filter(const vxgi::VoxelVolumes& volumes, const Rgba16Volume& radiance,
-            const std::vector<VoxelNormal>& normals = {}) {
+            const std::vector<VoxelNormal>& normals = {}, bool backsDark = true) {
     uploadRgba16(volumes.radiance, radiance);
     uploadOccupancy(volumes, radiance, normals);
     const vxgi::AnisoFilterPass pass(context());
     gpu::Tracker tracker = volumeTracker(volumes);
-    context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, nullptr, "test filter"); });
+    context().submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, tracker, volumes, backsDark, nullptr, "test filter"); });
 }
 
 // The GPU computes in fp32 from fp16 inputs and stores fp16, which on lavapipe
@@ -251,6 +251,10 @@ TEST_F(AnisoFilter, AVoxelSeenFromBehindBlocksButShowsNoLight) {
     expectVec(level0(0, 1), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f) * 0.25f, "-X, tilted");
     expectVec(level0(2, 1), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f) * 0.25f, "-Y, tilted");
     expectVec(level0(3, 1), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) * 0.25f, "+Y, tilted");
+    // --voxel-backs-dark off (the paper's filter): every voxel shows its light every way.
+    filter(volumes, radiance, {{{0, 0, 0}, {-1, 0, 0}}, {{1, 0, 0}, {1, 0, 0}}, {{2, 0, 0}, tilted}}, false);
+    expectVec(level0(3, 1), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f) * 0.25f, "+Y, tilted, backs lit");
+    expectVec(level0(1, 1), glm::vec4(0.0f, 0.0f, 1.0f, 1.0f) * 0.25f, "+X, tilted, backs lit");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // a CPU evaluation of the paper's eq. 2 (Lambert N.L) and eq. 5 (normal-
 // weighted W_x D_x + W_y D_y + W_z D_z), for the three light types; the light
 // per side of two-sided voxels, and what the filter's base level shows of them.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -14,6 +15,7 @@
 #include "gpu_fixture.h"
 #include "light_helpers.h"
 #include "render/shadows.h"
+#include "shared/aniso_filter_pass.h"
 #include "vxgi/aniso_filter.h"
 #include "vxgi/inject.h"
 
@@ -449,11 +451,20 @@ TEST_F(InjectDirect, TwoSidedVoxelsAreLitPerSide) {
     }
 }
 
+// How much of a one-sided voxel's light a ray travelling along direction
+// `dir` sees (aniso_filter.comp, seenFront): all of it face on or edge on,
+// none from behind.
+double seenFront(const dvec3& n, int dir) {
+    const double along = kSign[dir] * n[kAxis[dir]];
+    return std::clamp((sh::ANISO_BACK_FADE_END - along) / (sh::ANISO_BACK_FADE_END - sh::ANISO_BACK_FADE_START), 0.0,
+                      1.0);
+}
+
 // The filter's base level over two-sided voxels: rays along a voxel's axis
 // see the side they meet (travelling toward -axis, the +axis side), rays
 // across it an opaque black edge, and a voxel two-sided along several axes
 // is black every way, all with opacity 1; one-sided voxels show their
-// radiance as before.
+// radiance to the rays that meet their front (seenFront).
 TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
     const std::vector<SyntheticVoxel> voxels = makeVoxels(9);
     const AccumVolume accum = toAccum(voxels);
@@ -462,7 +473,7 @@ TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
     inject(volumes, vxgi::InjectPass(context()), {sun(), pointLight()}, true);
     const vxgi::AnisoFilterPass filter(context());
     gpu::Tracker tracker = volumeTracker(volumes);
-    context().submitAndWait([&](VkCommandBuffer cmd) { filter.record(cmd, tracker, volumes, nullptr, "test filter"); });
+    context().submitAndWait([&](VkCommandBuffer cmd) { filter.record(cmd, tracker, volumes, true, nullptr, "test filter"); });
     const Rgba16Volume radiance = readRgba16(volumes.radiance);
     const std::vector<glm::uvec4> sides = vxgi::readSideLight(context(), volumes);
     int counts[5] = {0, 0, 0, 0, 0};
@@ -480,7 +491,11 @@ TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
                         // The radiance's opacity marks the voxels the filter looks up.
                         EXPECT_EQ(t.a, 1.0f - float(code) * sh::TWO_SIDED_OPACITY_STEP);
                     }
-                    if (code == sh::SIDE_ONE) continue;
+                    if (code == sh::SIDE_ONE) {
+                        const float seen = float(seenFront(voxelNormal(channels(accum, x, y, z)), dir));
+                        t = glm::vec4(glm::vec3(t) * seen, t.a);
+                        continue;
+                    }
                     t = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
                     if (code == sh::SIDE_SEVERAL || int(code) - 1 != kAxis[dir]) continue;
                     const glm::uvec4 w = sides[voxelIndex(kN, x, y, z)];
