@@ -42,6 +42,13 @@ Rgba16Volume randomRadiance(uint32_t n, uint32_t seed) {
     return v;
 }
 
+Rgba16Volume emptyRadiance(uint32_t n) {
+    Rgba16Volume v;
+    v.n = n;
+    v.texels.assign(size_t(n) * n * n, glm::vec4(0.0f));
+    return v;
+}
+
 // Volumes with a slot for every voxel, so any radiance can be listed.
 vxgi::VoxelVolumes volumesFor(uint32_t n) { return vxgi::VoxelVolumes(context(), grid(n), n * n * n); }
 
@@ -170,9 +177,7 @@ TEST_F(AnisoFilter, FilteringAgainEmptiesCellsThatLostTheirVoxels) {
     constexpr uint32_t kN = 16;
     const vxgi::VoxelVolumes volumes = volumesFor(kN);
     filter(volumes, randomRadiance(kN, 7));
-    Rgba16Volume one;
-    one.n = kN;
-    one.texels.assign(size_t(kN) * kN * kN, glm::vec4(0.0f));
+    Rgba16Volume one = emptyRadiance(kN);
     one.at(5, 6, 7) = glm::vec4(0.25f, 0.5f, 0.75f, 1.0f);
     filter(volumes, one);
     int nonEmpty = 0;
@@ -194,9 +199,7 @@ TEST_F(AnisoFilter, FilteringAgainEmptiesCellsThatLostTheirVoxels) {
 TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
     constexpr uint32_t kN = 16;
     const vxgi::VoxelVolumes volumes = volumesFor(kN);
-    Rgba16Volume radiance;
-    radiance.n = kN;
-    radiance.texels.assign(size_t(kN) * kN * kN, glm::vec4(0.0f));
+    Rgba16Volume radiance = emptyRadiance(kN);
     radiance.at(0, 0, 0) = glm::vec4(0.5f, 0.0f, 0.0f, 0.5f);  // premultiplied
     radiance.at(1, 0, 0) = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
     filter(volumes, radiance);
@@ -225,9 +228,7 @@ TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
 TEST_F(AnisoFilter, AVoxelSeenFromBehindBlocksButShowsNoLight) {
     constexpr uint32_t kN = 16;
     const vxgi::VoxelVolumes volumes = volumesFor(kN);
-    Rgba16Volume radiance;
-    radiance.n = kN;
-    radiance.texels.assign(size_t(kN) * kN * kN, glm::vec4(0.0f));
+    Rgba16Volume radiance = emptyRadiance(kN);
     radiance.at(0, 0, 0) = glm::vec4(0.125f, 0.0f, 0.0f, 1.0f);
     radiance.at(1, 0, 0) = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
     radiance.at(2, 0, 0) = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
