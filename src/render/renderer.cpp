@@ -372,9 +372,9 @@ void Renderer::recordTemporal(VkCommandBuffer cmd) {
 }
 
 // After lights or static geometry change, feedback frames carry the voxel
-// light on from the old volumes, one bounce per frame: it settles over about
-// as many frames as converging took bounces, and the indirect term's history
-// stays dropped that long (tests/render/temporal_renderer_test.cpp).
+// light on from the old volumes, one bounce per frame, and the indirect
+// term's history stays dropped until it has settled (settleFrames;
+// tests/render/temporal_renderer_test.cpp).
 uint32_t Renderer::lightSettleFrames() const { return voxelizer_ && haveHistory_ ? settleFrames() : 1u; }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, uint32_t term, gpu::GpuTimers* timers) const {
