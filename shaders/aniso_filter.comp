@@ -61,22 +61,10 @@ float seenFront(vec3 n, uint dir) {
     return clamp((ANISO_BACK_FADE_END - along) / (ANISO_BACK_FADE_END - ANISO_BACK_FADE_START), 0.0, 1.0);
 }
 
-// The direction of occupied voxel p's mean normal (voxelNormal without the
-// fragment count, which the normalization cancels: six reads, not seven), 0
-// for an empty voxel, and for every voxel when the voxels show their light
-// every way (pc.sizes.y = 0).
-vec3 normalAt(ivec3 p) {
-    if (pc.sizes.y == 0u) return vec3(0.0);
-    uint slot = voxelSlotAt(p);
-    if (slot == 0u) return vec3(0.0);
-    slot -= 1u;
-    vec3 pos = vec3(voxelChannel(slot, CH_NORMAL_POS_X), voxelChannel(slot, CH_NORMAL_POS_Y),
-                    voxelChannel(slot, CH_NORMAL_POS_Z));
-    vec3 neg = vec3(voxelChannel(slot, CH_NORMAL_NEG_X), voxelChannel(slot, CH_NORMAL_NEG_Y),
-                    voxelChannel(slot, CH_NORMAL_NEG_Z));
-    vec3 n = sqrt(pos) - sqrt(neg);
-    float len = length(n);
-    return len > 1e-6 ? n / len : vec3(0.0);
+// The mean normal of the voxel in `slot` (slot + 1; 0: empty, normal 0), and
+// 0 for every voxel when the voxels show their light every way (pc.sizes.y = 0).
+vec3 normalOfSlot(uint slot) {
+    return pc.sizes.y == 0u || slot == 0u ? vec3(0.0) : voxelNormalDirection(slot - 1u);
 }
 #endif
 
@@ -93,9 +81,8 @@ vec3 childNormal[8];
 int childAxis[8];  // -1: one-sided
 vec3 childSide[8][2];
 
-// The side code of voxel p and its slot + 1 (0: empty).
-uint sideCodeAt(ivec3 p, out uint slot) {
-    slot = voxelSlotAt(p);
+// The side code of the voxel in `slot` (slot + 1; 0: empty).
+uint sideCodeOfSlot(uint slot) {
     return slot == 0u ? SIDE_ONE : sideCodeOf(imageLoad(direct, slotTexel(slot - 1u, 0u)));
 }
 
@@ -104,9 +91,10 @@ void loadChildren(ivec3 base) {
         ivec3 p = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
         children[i] = imageLoad(source, p);
         childAxis[i] = -1;
-        childNormal[i] = children[i].a > 0.0 ? normalAt(p) : vec3(0.0);
-        uint slot;
-        uint code = marksTwoSided(children[i].a) ? sideCodeAt(p, slot) : SIDE_ONE;
+        // One index lookup for the normal and the side code.
+        uint slot = children[i].a > 0.0 ? voxelSlotAt(p) : 0u;
+        childNormal[i] = normalOfSlot(slot);
+        uint code = marksTwoSided(children[i].a) ? sideCodeOfSlot(slot) : SIDE_ONE;
         if (code == SIDE_ONE) continue;
         children[i] = vec4(0.0, 0.0, 0.0, 1.0);
         if (code == SIDE_SEVERAL) continue;  // where thin walls meet no side is the one a ray meets
@@ -132,7 +120,7 @@ void loadChildren(ivec3 base) {
     for (int i = 0; i < 8; ++i) {
         ivec3 p = base + ivec3(i & 1, (i >> 1) & 1, i >> 2);
         children[i] = imageLoad(source, p);
-        childNormal[i] = children[i].a > 0.0 ? normalAt(p) : vec3(0.0);
+        childNormal[i] = normalOfSlot(children[i].a > 0.0 && pc.sizes.y != 0u ? voxelSlotAt(p) : 0u);
     }
 }
 

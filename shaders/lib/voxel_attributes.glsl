@@ -16,13 +16,27 @@ vec3 voxelEmission(uint slot) {
                 voxelChannel(slot, CH_EMISSION_B)) / n;
 }
 
+// Per-axis sums of n_a^2 over the fragments with n_a > 0 (pos) and n_a < 0 (neg).
+void voxelNormalSums(uint slot, out vec3 pos, out vec3 neg) {
+    pos = vec3(voxelChannel(slot, CH_NORMAL_POS_X), voxelChannel(slot, CH_NORMAL_POS_Y),
+               voxelChannel(slot, CH_NORMAL_POS_Z));
+    neg = vec3(voxelChannel(slot, CH_NORMAL_NEG_X), voxelChannel(slot, CH_NORMAL_NEG_Y),
+               voxelChannel(slot, CH_NORMAL_NEG_Z));
+}
+
 // Per-axis normal weights: pos.a = mean of n_a^2 over fragments with n_a > 0.
 void voxelNormalWeights(uint slot, out vec3 pos, out vec3 neg) {
     float n = max(voxelCount(slot), 1e-20);
-    pos = vec3(voxelChannel(slot, CH_NORMAL_POS_X), voxelChannel(slot, CH_NORMAL_POS_Y),
-               voxelChannel(slot, CH_NORMAL_POS_Z)) / n;
-    neg = vec3(voxelChannel(slot, CH_NORMAL_NEG_X), voxelChannel(slot, CH_NORMAL_NEG_Y),
-               voxelChannel(slot, CH_NORMAL_NEG_Z)) / n;
+    voxelNormalSums(slot, pos, neg);
+    pos /= n;
+    neg /= n;
+}
+
+// sqrt(pos) - sqrt(neg) as a unit vector, 0 where opposite faces cancel.
+vec3 normalFromWeights(vec3 pos, vec3 neg) {
+    vec3 n = sqrt(pos) - sqrt(neg);
+    float len = length(n);
+    return len > 1e-6 ? n / len : vec3(0.0);
 }
 
 // A representative unit normal: sqrt of the weights keeps a single surface's
@@ -30,7 +44,13 @@ void voxelNormalWeights(uint slot, out vec3 pos, out vec3 neg) {
 vec3 voxelNormal(uint slot) {
     vec3 pos, neg;
     voxelNormalWeights(slot, pos, neg);
-    vec3 n = sqrt(pos) - sqrt(neg);
-    float len = length(n);
-    return len > 1e-6 ? n / len : vec3(0.0);
+    return normalFromWeights(pos, neg);
+}
+
+// voxelNormal from the sums alone: the fragment count scales every weight
+// alike and the normalization cancels it, one read fewer.
+vec3 voxelNormalDirection(uint slot) {
+    vec3 pos, neg;
+    voxelNormalSums(slot, pos, neg);
+    return normalFromWeights(pos, neg);
 }
