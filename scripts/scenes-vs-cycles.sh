@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# dvsgi on the shared Sponza and Sibenik scenes against the Cycles references in
+# docs/quality/cycles/ (scripts/cycles-reference.py), split by bounce
+# (scripts/scene-compare.py), and on the Cornell box turned about the vertical,
+# whose path-traced image is the unturned reference (nothing in the scene but the
+# voxel grid's axes moves with the turn).
+#
+#   scripts/scenes-vs-cycles.sh DVSGI OUT_DIR [SHARED_DIR] [-- extra dvsgi options]
+# Writes OUT_DIR/table.md and each render's AOV and JSON. VOXELS (default 128)
+# sets the grid. About 3 minutes on lavapipe.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ $# -ge 2 ] || { echo "usage: scripts/scenes-vs-cycles.sh DVSGI OUT_DIR [SHARED_DIR] [-- options]" >&2; exit 2; }
+dvsgi=$1
+out=$2
+shift 2
+shared=../shared
+if [ $# -gt 0 ] && [ "$1" != "--" ]; then shared=$1; shift; fi
+[ $# -gt 0 ] && [ "$1" = "--" ] && shift
+extra=("$@")
+voxels=${VOXELS:-128}
+refs=docs/quality/cycles
+[ -x "$dvsgi" ] || { echo "scenes-vs-cycles: $dvsgi is not an executable" >&2; exit 2; }
+[ -d "$shared/scenes" ] || { echo "scenes-vs-cycles: no scenes under $shared" >&2; exit 2; }
+mkdir -p "$out"
+table=$out/table.md
+{
+  echo "<!-- written by scripts/scenes-vs-cycles.sh $dvsgi $out $shared ${extra[*]} (VOXELS=$voxels) on $(date -u +%F) -->"
+  echo "| scene (320x180, ${voxels}³) | direct | indirect | first bounce | later bounces | indirect where no direct light |"
+  echo "|---|---|---|---|---|---|"
+} > "$table"
+for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-point; do
+  n=$(basename "$s")
+  common=(render "$shared/scenes/$s.gltf" --width 320 --height 180 --voxels "$voxels" --png none --quiet "${extra[@]}")
+  "$dvsgi" "${common[@]}" --out "$out/$n.exr" --aov "$out/$n-aov.exr" --metrics "$out/$n.json"
+  "$dvsgi" "${common[@]}" --bounces 0 --out "$out/$n-first.exr" --aov "$out/$n-first-aov.exr"
+  /usr/bin/python3 scripts/scene-compare.py "$refs/$n" "$out/$n-aov.exr" "$out/$n-first-aov.exr" \
+      --json "$out/$n-compare.json" > /dev/null
+  /usr/bin/python3 - "$out/$n-compare.json" "$n" >> "$table" <<'EOF'
+import json, sys
+r = json.load(open(sys.argv[1]))
+print("| %s | %.3f | **%.3f** | %.3f | %.3f | %.3f |" % (sys.argv[2], r["direct"], r["indirect"], r["first"],
+                                                        r["later"], r["shadowed_indirect"]))
+EOF
+done
+# The Cornell box turned about its vertical axis (the camera and lights with it).
+{
+  echo
+  echo "| Cornell box turned about the vertical (256², 64³), mean luminance / reference | 0° | 30° | 45° |"
+  echo "|---|---|---|---|"
+} >> "$table"
+for n in cornell-lights cornell-emissive; do
+  row="| $n"
+  for deg in 0 30 45; do
+    scene=$out/$n-turn$deg.gltf
+    /usr/bin/python3 scripts/turn-scene.py "$shared/scenes/cornell-box/$n.gltf" "$scene" "$deg"
+    "$dvsgi" render "$scene" --allow-outside-references --width 256 --height 256 --voxels 64 --png none --quiet \
+        "${extra[@]}" --out "$out/$n-turn$deg.exr"
+    ratio=$(/usr/bin/python3 scripts/lum-ratio.py "$out/$n-turn$deg.exr" "$shared/reference/cornell-box/$n.exr")
+    row="$row | $ratio"
+  done
+  echo "$row |" >> "$table"
+done
+cat "$table"
