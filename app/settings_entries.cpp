@@ -384,11 +384,12 @@ std::vector<Setting> imageAndVoxels() {
                      1024, FIELD(settings.emitterPatches)),
              "16"),
         with(toggle({"normal-weighted", kVoxelLight, "on|off", "",
-                     "normal-weighted attenuation at voxels (paper eq. 5) or plain Lambert N.L with the averaged "
-                     "normal (eq. 2)",
+                     "normal-weighted attenuation at voxels (paper eq. 5: W = N^2, exact only for planes along the "
+                     "axes; a plane at 45 degrees lit head on gets 71 % of its light) or plain Lambert N.L with "
+                     "the averaged normal (eq. 2: exact for one plane at any orientation)",
                      kAll, kFrame},
                     FIELD(settings.voxelLight.normalWeighted)),
-             "off"),
+             "on"),
         with(toggle({"voxel-backs-dark", kVoxelLight, "on|off", "",
                      "a one-sided voxel seen from behind shows cones no light but still blocks them (off: its light "
                      "every way, as the paper filters)",

@@ -25,7 +25,7 @@ table="$out/gi-${size}px-${voxels}.md"
 } > "$table"
 cases=(
   "defaults|"
-  "paper: 1 bounce by cones, emitters by cones, every pixel traced, voxels lit every way|--bounces 1 --bounce-trace cones --emitters cones --cone-spin off --voxel-backs-dark off --trace-scale 1"
+  "paper: 1 bounce by cones, emitters by cones, every pixel traced, voxels lit every way, eq. 5 at voxels|--bounces 1 --bounce-trace cones --emitters cones --cone-spin off --voxel-backs-dark off --normal-weighted on --trace-scale 1"
   "defaults, the bounce by cones|--bounce-trace cones"
   "defaults, the six cones not turned|--cone-spin off"
   "defaults, 16 cones|--cones 16"

@@ -31,7 +31,10 @@ enum class BounceTrace {
 };
 
 struct VoxelLightSettings {
-    bool normalWeighted = true;           // eq. 5 (else Lambert N.L, eq. 2)
+    // Paper eq. 5 (W = N^2) reads a plane at 45 degrees to the axes, lit head on, at 71 % of its
+    // light (58 % along a diagonal): off by default, Lambert N.L with the averaged normal (eq. 2),
+    // exact for a voxel holding one plane at any orientation (docs/quality.md, "Walls at an angle").
+    bool normalWeighted = false;
     Occlusion occlusion = Occlusion::PerLight;  // global override of each light's mode
     float softKappa = 0.5f;               // soft raycast: nu += (1 - nu) * kappa / t
     float shadowNormalOffset = 1.5f;      // texels

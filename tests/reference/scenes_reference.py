@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""Scenes other than the upright Cornell box against path-traced truth, with the defaults (64^3):
+- the shared Sponza (sun, point light) and Sibenik scenes at 320x180 against the Cycles references
+  in docs/quality/cycles/ (scripts/cycles-reference.py): the direct term against the direct-only
+  render and the indirect term against converged - direct-only (scripts/scene-compare.py's metrics);
+- both Cornell scenes turned 45 degrees about the vertical (scripts/turn-scene.py), 256x256, whose
+  path-traced image is the upright reference: the voxel grid keeps the world's axes, so this measures
+  how much the voxels' light depends on the orientation of the walls.
+The bounds allow 1.5 times the measured error (docs/quality.md, "Sponza and Sibenik against Cycles"
+and "Walls at an angle"; scripts/scenes-vs-cycles.sh at VOXELS=64 writes the same figures).
+Usage: scenes_reference.py path/to/dvsgi path/to/shared path/to/repository"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import OpenImageIO as oiio
+
+dvsgi, shared, repo = sys.argv[1], sys.argv[2], sys.argv[3]
+refs = os.path.join(repo, "docs/quality/cycles")
+for need in (os.path.join(shared, "scenes/crytek-sponza"), os.path.join(shared, "scenes/sibenik"),
+             os.path.join(shared, "reference/cornell-box"), os.path.join(refs, "sponza-sun.exr")):
+    if not os.path.exists(need):
+        print("FAIL: %s not found" % need)
+        sys.exit(1)
+LUM = np.array([0.2126, 0.7152, 0.0722])
+
+
+def luminance(path, layer=None):
+    inp = oiio.ImageInput.open(path)
+    if inp is None:
+        print("FAIL: cannot read %s" % path)
+        sys.exit(1)
+    names = list(inp.spec().channelnames)
+    px = np.asarray(inp.read_image(format="float"), dtype=np.float64)
+    inp.close()
+    idx = [0, 1, 2] if layer is None else [names.index(layer + "." + c) for c in "RGB"]
+    y = px[:, :, idx] @ LUM
+    if not np.all(np.isfinite(y)):
+        print("FAIL: non-finite pixels in %s" % path)
+        sys.exit(1)
+    return y
+
+
+def render(scene, out, width, height, *extra):
+    subprocess.run([dvsgi, "render", scene, "--width", str(width), "--height", str(height), "--voxels", "64",
+                    "--out", out, "--png", "none", "--quiet", "--validate", *extra], check=True, timeout=600)
+
+
+# (name, measured direct ratio, measured indirect ratio), 320x180, 64^3, defaults.
+SCENES = [("crytek-sponza/sponza-sun", 1.0169, 0.7336),
+          ("crytek-sponza/sponza-point", 1.0150, 0.9314),
+          ("sibenik/sibenik-point", 1.0091, 0.8101)]
+# (name, measured mean-luminance ratio of the scene turned 45 degrees), 256x256, 64^3, defaults.
+TURNED = [("cornell-lights", 0.9805), ("cornell-emissive", 0.9454)]
+
+tmp = tempfile.mkdtemp(prefix="dvsgi-scenes-")
+failures, checks = [], 0
+
+
+def check(label, value, measured):
+    global checks
+    checks += 1
+    bound = 1.5 * abs(measured - 1.0)
+    ok = abs(value - 1.0) <= bound
+    print("%-44s %.4f (measured %.4f, allowed 1 +- %.4f)%s" % (label, value, measured, bound, "" if ok else "  FAIL"))
+    if not ok:
+        failures.append("%s: %.4f beyond 1 +- %.4f" % (label, value, bound))
+
+
+for scene, direct_measured, indirect_measured in SCENES:
+    name = os.path.basename(scene)
+    aov = os.path.join(tmp, name + "-aov.exr")
+    render(os.path.join(shared, "scenes", scene + ".gltf"), os.path.join(tmp, name + ".exr"), 320, 180,
+           "--aov", aov)
+    full, b0 = luminance(os.path.join(refs, name + ".exr")), luminance(os.path.join(refs, name + "-b0.exr"))
+    check(name + " direct", luminance(aov, "direct").mean() / b0.mean(), direct_measured)
+    check(name + " indirect", luminance(aov, "indirect").mean() / (full - b0).mean(), indirect_measured)
+
+for name, measured in TURNED:
+    turned = os.path.join(tmp, name + "-turn45.gltf")
+    subprocess.run([sys.executable, os.path.join(repo, "scripts/turn-scene.py"),
+                    os.path.join(shared, "scenes/cornell-box", name + ".gltf"), turned, "45"], check=True)
+    out = os.path.join(tmp, name + "-turn45.exr")
+    render(turned, out, 256, 256, "--allow-outside-references")
+    ref = luminance(os.path.join(shared, "reference/cornell-box", name + ".exr"))
+    check(name + " turned 45 degrees", luminance(out).mean() / ref.mean(), measured)
+
+print("\n".join("FAIL " + f for f in failures))
+print("%d passed, %d failed" % (checks - len(failures), len(failures)))
+sys.exit(1 if failures else 0)
