@@ -39,9 +39,12 @@ TEST(CliSettingsTable, NamesUniqueHelpAndGroupsPresent) {
         EXPECT_TRUE(groups.count(s.group)) << s.name << " in unknown group " << s.group;
         EXPECT_NE(s.commands & kAll, 0u) << s.name;
         EXPECT_TRUE(s.parse && s.text && s.json) << s.name;
-        if (s.takesValue()) EXPECT_FALSE(s.metavar.empty()) << s.name;
-        if (s.kind != Kind::Text && s.kind != Kind::Flag && s.name != "dynamic")
+        if (s.takesValue()) {
+            EXPECT_FALSE(s.metavar.empty()) << s.name;
+        }
+        if (s.kind != Kind::Text && s.kind != Kind::Flag && s.name != "dynamic") {
             EXPECT_FALSE(s.expected.empty()) << s.name;
+        }
         if (s.kind == Kind::Integer || s.kind == Kind::Number) {
             EXPECT_LT(s.lo, s.hi) << s.name;
             EXPECT_TRUE(s.number && s.setNumber) << s.name;
@@ -60,7 +63,9 @@ TEST(CliSettingsTable, EveryDefaultIsInsideItsRange) {
             case Kind::Number: {
                 const double v = s.number(defaults);
                 EXPECT_TRUE((s.lo <= v && v <= s.hi) || (s.zeroOk && v == 0.0)) << s.name << " = " << v;
-                if (s.pow2 && v != 0.0) EXPECT_EQ(uint64_t(v) & (uint64_t(v) - 1), 0u) << s.name;
+                if (s.pow2 && v != 0.0) {
+                    EXPECT_EQ(uint64_t(v) & (uint64_t(v) - 1), 0u) << s.name;
+                }
                 break;
             }
             case Kind::Toggle:
@@ -176,7 +181,9 @@ TEST(CliSettingsTable, HelpNamesEveryFlagWithItsRangeAndDefault) {
     for (const Setting& s : settingsTable()) {
         heads.push_back(help.find(" --" + s.name + (s.metavar.empty() ? "" : " " + s.metavar) + " "));
         ASSERT_NE(heads.back(), std::string::npos) << s.name;
-        if (heads.size() > 1) ASSERT_GT(heads.back(), heads[heads.size() - 2]) << s.name;
+        if (heads.size() > 1) {
+            ASSERT_GT(heads.back(), heads[heads.size() - 2]) << s.name;
+        }
     }
     heads.push_back(help.size());
     for (size_t i = 0; i < settingsTable().size(); ++i) {
@@ -187,10 +194,11 @@ TEST(CliSettingsTable, HelpNamesEveryFlagWithItsRangeAndDefault) {
                                                        : "default " + s.text(defaults);
         EXPECT_NE(entry.find(def), std::string::npos) << s.name << ": " << entry;
         EXPECT_NE(entry.find(s.help.substr(0, 20)), std::string::npos) << s.name;
-        if (s.kind == Kind::Integer || s.kind == Kind::Number)
+        if (s.kind == Kind::Integer || s.kind == Kind::Number) {
             EXPECT_NE(entry.find(s.range() + (s.unit.empty() || s.unit == "EV" ? "" : " " + s.unit)),
                       std::string::npos)
                 << s.name << ": " << entry;
+        }
     }
     for (const SettingGroup& g : settingGroups()) EXPECT_NE(help.find(" " + g.name + ": "), std::string::npos);
 }

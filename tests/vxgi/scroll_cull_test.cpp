@@ -109,8 +109,9 @@ TEST(ScrollCull, NoGroupIsLeftOutThatTheShaderWouldVoxelize) {
         culled += !kept;
         for (size_t t = 0; t < worldCorners.size(); t += 3) {
             ++checked;
-            if (shaderMayWrite(&worldCorners[t], g, keep))
+            if (shaderMayWrite(&worldCorners[t], g, keep)) {
                 ASSERT_TRUE(kept) << "trial " << trial << ": a triangle the shader voxelizes was left out";
+            }
         }
     }
     std::printf("groups %d, left out %d; triangles checked %d\n", groups, culled, checked);
