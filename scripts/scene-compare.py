@@ -2,6 +2,7 @@
 """A dvsgi render of a scene without a shared reference against Cycles references split by bounce.
 
     scripts/scene-compare.py REF_PREFIX RENDER_AOV.exr [FIRST_BOUNCE_AOV.exr] [--json OUT.json]
+                             [--row LABEL]
 
 REF_PREFIX names three Cycles renders of the same scene, camera and size
 (scripts/cycles-reference.py): REF_PREFIX.exr (converged, 64 bounces),
@@ -17,6 +18,8 @@ dvsgi / Cycles:
   later       the bounces after it (converged - first) against converged - (direct + one bounce);
   shadowed    the indirect term where neither renderer has direct light (so that
               shadow edges, where the two renderers' direct light differs, stay out).
+--json writes them to a file; --row prints them instead as one markdown table row
+(| LABEL | direct | indirect | first | later | shadowed |, which needs FIRST_BOUNCE_AOV).
 """
 import json
 import sys
@@ -52,14 +55,22 @@ def luminance(path, layer=None):
     return y
 
 
+def take_option(argv, name):
+    """The value of `name VALUE` in argv (None if absent) and argv without the pair."""
+    if name not in argv:
+        return None, argv
+    i = argv.index(name)
+    if i + 1 >= len(argv):
+        fail("%s needs a value" % name)
+    return argv[i + 1], argv[:i] + argv[i + 2:]
+
+
 def main(argv):
-    out_json = None
-    if "--json" in argv:
-        i = argv.index("--json")
-        out_json = argv[i + 1]
-        argv = argv[:i] + argv[i + 2:]
-    if len(argv) not in (2, 3):
-        fail("usage: scene-compare.py REF_PREFIX RENDER_AOV.exr [FIRST_BOUNCE_AOV.exr] [--json OUT.json]")
+    out_json, argv = take_option(argv, "--json")
+    row, argv = take_option(argv, "--row")
+    if len(argv) not in (2, 3) or (row is not None and len(argv) != 3):
+        fail("usage: scene-compare.py REF_PREFIX RENDER_AOV.exr [FIRST_BOUNCE_AOV.exr] [--json OUT.json] "
+             "[--row LABEL] (--row needs FIRST_BOUNCE_AOV.exr)")
     prefix, render = argv[0], argv[1]
     ref_full, ref_b0, ref_b1 = (luminance(prefix + s + ".exr") for s in ("", "-b0", "-b1"))
     direct, indirect = luminance(render, "direct"), luminance(render, "indirect")
@@ -76,8 +87,12 @@ def main(argv):
         first = luminance(argv[2], "indirect")
         r["first"] = first.mean() / (ref_b1 - ref_b0).mean()
         r["later"] = (indirect - first).mean() / (ref_full - ref_b1).mean()
-    for k, v in r.items():
-        print("%-18s %.4f" % (k, v))
+    if row is not None:
+        print("| %s | %.3f | **%.3f** | %.3f | %.3f | %.3f |" % (row, r["direct"], r["indirect"], r["first"],
+                                                                r["later"], r["shadowed_indirect"]))
+    else:
+        for k, v in r.items():
+            print("%-18s %.4f" % (k, v))
     if out_json:
         with open(out_json, "w") as f:
             json.dump({k: float(v) for k, v in r.items()}, f, indent=2)

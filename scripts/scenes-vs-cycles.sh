@@ -35,13 +35,7 @@ for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-poi
   "$dvsgi" "${common[@]}" --out "$out/$n.exr" --aov "$out/$n-aov.exr" --metrics "$out/$n.json"
   "$dvsgi" "${common[@]}" --bounces 0 --out "$out/$n-first.exr" --aov "$out/$n-first-aov.exr"
   /usr/bin/python3 scripts/scene-compare.py "$refs/$n" "$out/$n-aov.exr" "$out/$n-first-aov.exr" \
-      --json "$out/$n-compare.json" > /dev/null
-  /usr/bin/python3 - "$out/$n-compare.json" "$n" >> "$table" <<'EOF'
-import json, sys
-r = json.load(open(sys.argv[1]))
-print("| %s | %.3f | **%.3f** | %.3f | %.3f | %.3f |" % (sys.argv[2], r["direct"], r["indirect"], r["first"],
-                                                        r["later"], r["shadowed_indirect"]))
-EOF
+      --json "$out/$n-compare.json" --row "$n" >> "$table"
 done
 # The Cornell box turned about its vertical axis (the camera and lights with it).
 {

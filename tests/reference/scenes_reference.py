@@ -2,20 +2,18 @@
 """Scenes other than the upright Cornell box against path-traced truth, with the defaults (64^3):
 - the shared Sponza (sun, point light) and Sibenik scenes at 320x180 against the Cycles references
   in docs/quality/cycles/ (scripts/cycles-reference.py): the direct term against the direct-only
-  render and the indirect term against converged - direct-only (scripts/scene-compare.py's metrics);
+  render and the indirect term against converged - direct-only (computed by scripts/scene-compare.py);
 - both Cornell scenes turned 45 degrees about the vertical (scripts/turn-scene.py), 256x256, whose
   path-traced image is the upright reference: the voxel grid keeps the world's axes, so this measures
   how much the voxels' light depends on the orientation of the walls.
 The bounds allow 1.5 times the measured error (docs/quality.md, "Sponza and Sibenik against Cycles"
 and "Walls at an angle"; scripts/scenes-vs-cycles.sh at VOXELS=64 writes the same figures).
 Usage: scenes_reference.py path/to/dvsgi path/to/shared path/to/repository"""
+import json
 import os
 import subprocess
 import sys
 import tempfile
-
-import numpy as np
-import OpenImageIO as oiio
 
 dvsgi, shared, repo = sys.argv[1], sys.argv[2], sys.argv[3]
 refs = os.path.join(repo, "docs/quality/cycles")
@@ -24,23 +22,16 @@ for need in (os.path.join(shared, "scenes/crytek-sponza"), os.path.join(shared, 
     if not os.path.exists(need):
         print("FAIL: %s not found" % need)
         sys.exit(1)
-LUM = np.array([0.2126, 0.7152, 0.0722])
 
 
-def luminance(path, layer=None):
-    inp = oiio.ImageInput.open(path)
-    if inp is None:
-        print("FAIL: cannot read %s" % path)
+def script(name, *args):
+    """Runs scripts/NAME (the metrics the docs' figures come from) and returns its stdout."""
+    run = subprocess.run([sys.executable, os.path.join(repo, "scripts", name), *args], capture_output=True,
+                         text=True, timeout=600)
+    if run.returncode != 0:
+        print("FAIL: scripts/%s: %s" % (name, run.stderr.strip()))
         sys.exit(1)
-    names = list(inp.spec().channelnames)
-    px = np.asarray(inp.read_image(format="float"), dtype=np.float64)
-    inp.close()
-    idx = [0, 1, 2] if layer is None else [names.index(layer + "." + c) for c in "RGB"]
-    y = px[:, :, idx] @ LUM
-    if not np.all(np.isfinite(y)):
-        print("FAIL: non-finite pixels in %s" % path)
-        sys.exit(1)
-    return y
+    return run.stdout
 
 
 def render(scene, out, width, height, *extra):
@@ -74,18 +65,20 @@ for scene, direct_measured, indirect_measured in SCENES:
     aov = os.path.join(tmp, name + "-aov.exr")
     render(os.path.join(shared, "scenes", scene + ".gltf"), os.path.join(tmp, name + ".exr"), 320, 180,
            "--aov", aov)
-    full, b0 = luminance(os.path.join(refs, name + ".exr")), luminance(os.path.join(refs, name + "-b0.exr"))
-    check(name + " direct", luminance(aov, "direct").mean() / b0.mean(), direct_measured)
-    check(name + " indirect", luminance(aov, "indirect").mean() / (full - b0).mean(), indirect_measured)
+    metrics = os.path.join(tmp, name + ".json")
+    script("scene-compare.py", os.path.join(refs, name), aov, "--json", metrics)
+    with open(metrics) as f:
+        r = json.load(f)
+    check(name + " direct", r["direct"], direct_measured)
+    check(name + " indirect", r["indirect"], indirect_measured)
 
 for name, measured in TURNED:
     turned = os.path.join(tmp, name + "-turn45.gltf")
-    subprocess.run([sys.executable, os.path.join(repo, "scripts/turn-scene.py"),
-                    os.path.join(shared, "scenes/cornell-box", name + ".gltf"), turned, "45"], check=True)
+    script("turn-scene.py", os.path.join(shared, "scenes/cornell-box", name + ".gltf"), turned, "45")
     out = os.path.join(tmp, name + "-turn45.exr")
     render(turned, out, 256, 256, "--allow-outside-references")
-    ref = luminance(os.path.join(shared, "reference/cornell-box", name + ".exr"))
-    check(name + " turned 45 degrees", luminance(out).mean() / ref.mean(), measured)
+    ratio = float(script("lum-ratio.py", out, os.path.join(shared, "reference/cornell-box", name + ".exr")))
+    check(name + " turned 45 degrees", ratio, measured)
 
 print("\n".join("FAIL " + f for f in failures))
 print("%d passed, %d failed" % (checks - len(failures), len(failures)))
