@@ -2,6 +2,7 @@
 
     blender -b --factory-startup -P scripts/cycles-reference.py -- SCENE.gltf OUT.exr \
         [--width 320] [--height 180] [--spp 256] [--seed 0] [--threads 0] [--bounces 64]
+        [--probe X,Y,Z,NX,NY,NZ]
 
 Blender (Debian package `blender`, 3.4.1 on Debian 12, the version the shared references name) is a
 tool for making references, not a dependency of the renderer. The scene is set up the way
@@ -10,6 +11,10 @@ with baseColorFactor x baseColorTexture (sRGB-decoded), alpha MASK as a cut-out 
 one-sided emission unless doubleSided, an ideal sun of strength E, ideal point lights of power 4 pi I,
 black world, a box filter one pixel wide, up to 64 bounces, no clamping, no denoiser, float32 EXR of
 linear radiance. Spot lights are refused (Cycles' spot falloff is not the glTF one).
+--probe replaces the scene's camera by a 180-degree equidistant fisheye at the point (X, Y, Z) of the
+glTF's world, looking along (NX, NY, NZ): what a surface there with that normal sees, for
+scripts/probe-irradiance.py to integrate into its irradiance (with --bounces 0, the first bounce it
+gathers from directly lit surfaces).
 The glTF importer's own light units are not used: light strengths are set from the file's values.
 """
 import argparse
@@ -42,7 +47,15 @@ def parse_args():
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=int, default=0)
     p.add_argument("--bounces", type=int, default=64)
+    p.add_argument("--probe", default=None)
     a = p.parse_args(argv)
+    if a.probe is not None:
+        try:
+            a.probe = [float(v) for v in a.probe.split(",")]
+        except ValueError:
+            a.probe = []
+        if len(a.probe) != 6 or not any(a.probe[3:]):
+            fail("--probe: want X,Y,Z,NX,NY,NZ with a non-zero normal")
     if a.width < 1 or a.height < 1 or a.spp < 1 or a.bounces < 0:
         fail("width, height and spp must be positive, bounces not negative")
     return a
@@ -176,6 +189,19 @@ def main():
     cam.data.clip_start = gcam.get("znear", 0.01)
     cam.data.clip_end = gcam.get("zfar", 1000.0)
     scene.camera = cam
+    if a.probe is not None:
+        import mathutils
+        # glTF's +Y up is Blender's +Z (the importer's conversion: (x, y, z) -> (x, -z, y)).
+        x, y, z, nx, ny, nz = a.probe
+        cam.parent = None
+        cam.location = (x, -z, y)
+        cam.rotation_mode = "QUATERNION"
+        cam.rotation_quaternion = mathutils.Vector((nx, -nz, ny)).normalized().to_track_quat("-Z", "Y")
+        cam.data.type = "PANO"
+        owner = cam.data if hasattr(cam.data, "panorama_type") else cam.data.cycles
+        owner.panorama_type = "FISHEYE_EQUIDISTANT"
+        owner.fisheye_fov = math.pi
+        cam.data.clip_start = 1e-4
 
     world = bpy.data.worlds.new("black")
     world.use_nodes = True
