@@ -25,8 +25,9 @@ Culprit culprit(std::string_view resource, const RenderOptions& o) {
         c.setting = "--voxels " + std::to_string(o.settings.voxels);
         uint64_t total = 0;
         const uint32_t n = o.settings.voxels;
-        const bool rays = render::bounceTracesRays(o.settings);
-        for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(n, vxgi::defaultSlotCapacity(n), rays)) total += m.bytes;
+        const bool rays = render::bounceTracesRays(o.settings), gatherRays = render::gatherTracesRays(o.settings);
+        for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(n, vxgi::defaultSlotCapacity(n), rays, gatherRays))
+            total += m.bytes;
         c.total = "; the voxel volumes need " + formatBytes(double(total)) + " in all";
         c.advice = "fewer --voxels";
     } else if (has(resource, "shadow map")) {

@@ -75,7 +75,7 @@ void printVoxelGrid(const render::Renderer& renderer) {
     std::printf("voxel grid: %u^3, origin (%.4f, %.4f, %.4f) m, voxel %.5f m, %s, %u voxel slots\n", g.n,
                 g.origin.x, g.origin.y, g.origin.z, g.voxelSize, how, v.slots);
     uint64_t total = 0;
-    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n, v.slots, renderer.bounceRays())) {
+    for (const vxgi::VolumeMemory& m : vxgi::volumeMemory(g.n, v.slots, renderer.bounceRays(), renderer.gatherRays())) {
         std::printf("  %-40s %-20s %9.1f MiB\n", m.name.c_str(), m.format.c_str(), double(m.bytes) / 1048576.0);
         total += m.bytes;
     }

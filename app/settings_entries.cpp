@@ -391,8 +391,8 @@ std::vector<Setting> imageAndVoxels() {
                     FIELD(settings.voxelLight.normalWeighted)),
              "on"),
         with(toggle({"voxel-backs-dark", kVoxelLight, "on|off", "",
-                     "a one-sided voxel seen from behind shows cones no light but still blocks them (off: its light "
-                     "every way, as the paper filters)",
+                     "a one-sided voxel seen from behind shows cones and rays no light but still blocks them (off: "
+                     "its light every way, as the paper filters)",
                      kAll, kFrame},
                     FIELD(settings.voxelLight.backsDark)),
              "off"),

@@ -74,6 +74,26 @@ std::vector<Setting> conesAndCommands() {
                      kAll, kFrame},
                     {{"6", 6u}, {"16", 16u}}, FIELD(settings.cones.coneSet)),
              "16"),
+        with(choice({"gather-trace", kCones, "cones|rays", "",
+                     "how each pixel gathers its indirect diffuse light: cones = the --cones set through the "
+                     "filtered volumes (the paper); rays = --gather-rays cosine rays marched voxel by voxel "
+                     "through the radiance volume (a fitted grid's; --clipmap levels and --voxelizer pv trace "
+                     "cones); specular keeps its cone",
+                     kAll, kFrame},
+                    {{"cones", render::GatherTrace::Cones}, {"rays", render::GatherTrace::Rays}}, FIELD(settings.gather.trace)),
+             "cones", "cones or rays"),
+        with(integer({"gather-rays", kCones, "R", "",
+                      "--gather-trace rays: rays per traced pixel, the same every frame; the 3x3 resolve "
+                      "(--cone-spin's) averages neighbours' rays",
+                      kAll, kFrame},
+                     1, 1024, FIELD(settings.gather.rays)),
+             "8"),
+        with(number({"gather-ray-offset", kCones, "V", "voxels",
+                     "--gather-trace rays: ray origins move V voxels along the normal (voxels of the pixel's own "
+                     "surface are passed however far)",
+                     kAll, kFrame},
+                    0, 8, FIELD(settings.gather.rayOffsetVoxels)),
+             "1.5", "voxels in 0..8"),
         with(number({"cone-step", kCones, "B", "", "step = B * cone diameter (beta)", kAll, kFrame}, 0.05, 4,
                     FIELD(settings.cones.stepFactor)),
              "1", "a step factor beta in 0.05..4"),

@@ -117,14 +117,15 @@ else
   rc=$?
   log "bench (geometry voxelizer): exit $rc; $(grep -c ' done in ' "$out/bench-geometry-stderr.txt") measurements done"
   [ $rc -eq 0 ] || status=1
-  # The voxel bounce by the paper's cones against the default rays
-  # (docs/quality.md, "The voxel bounce by rays"): what the rays cost on this device.
-  log "bench: --bounce-trace cones, Sponza, 1920x1080, 256"
+  # The voxel bounce and the gather by the paper's cones against the default
+  # rays (docs/quality.md, "The voxel bounce by rays", "The gather by rays"):
+  # what the rays cost on this device.
+  log "bench: --bounce-trace cones --gather-trace cones, Sponza, 1920x1080, 256"
   timeout "${DVSGI_GPU_CONES_TIMEOUT:-90}" "${runner[@]}" "$dvsgi" bench "$shared/scenes/crytek-sponza/sponza-sun.gltf" \
     --bench-voxels 256 --bench-frames 5 --bench-warmup 2 --width 1920 --height 1080 --bounce-trace cones \
-    --bench-out "$out/bench-cones.json" > "$out/bench-cones.md" 2> "$out/bench-cones-stderr.txt"
+    --gather-trace cones --bench-out "$out/bench-cones.json" > "$out/bench-cones.md" 2> "$out/bench-cones-stderr.txt"
   rc=$?
-  log "bench (bounce cones): exit $rc"
+  log "bench (bounce and gather by cones): exit $rc"
   [ $rc -eq 0 ] || status=1
   # Progressive voxelization, the chapter's tables at 128^3 (docs/pv.md); a
   # model the bundle lacks gets a row saying so.

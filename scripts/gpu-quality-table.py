@@ -13,16 +13,16 @@ shared = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__fi
 sys.path.insert(0, os.path.join(shared, "tools"))
 import compare  # noqa: E402  (shared/tools/compare.py: the metric definitions)
 
-print("| scene (512², 128³) | cones | bounces | relative RMSE | mean-luminance ratio | within 10 % | GPU ms |")
+print("| scene (512², 128³) | gather | bounces | relative RMSE | mean-luminance ratio | within 10 % | GPU ms |")
 print("|---|---|---|---|---|---|---|")
 for scene in ("cornell-lights", "cornell-emissive"):
     ref = compare.read_rgb(os.path.join(shared, "reference/cornell-box/%s.exr" % scene))
-    for suffix, cones in (("128", 6), ("128-c16", 16)):
+    for suffix, gather in (("128", "rays"), ("128-cones", "six cones")):
         m, _, _ = compare.compare(compare.read_rgb(os.path.join(folder, "%s-%s.exr" % (scene, suffix))), ref)
         j = json.load(open(os.path.join(folder, "%s-%s.json" % (scene, suffix))))
         b = j["bounces"]
-        print("| %s | %d | %d%s | %.3f | %.3f | %.2f | %.1f |" % (
-            scene, cones, b["first_frame"], " (converged)" if b["converged"] else "", m["rel_rmse"],
+        print("| %s | %s | %d%s | %.3f | %.3f | %.2f | %.1f |" % (
+            scene, gather, b["first_frame"], " (converged)" if b["converged"] else "", m["rel_rmse"],
             m["mean_lum_ratio"], m["frac_within_tol"], j["gpu_ms"]))
 print()
 print("| cornell-lights, indirect term (512²) | 64³ | 128³ | 256³ | 128³, β = 1 |")

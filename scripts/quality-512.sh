@@ -27,7 +27,7 @@ qrender() {  # NAME SCENE ARGS...
 dvsgi=("$@")
 for sc in cornell-lights cornell-emissive; do
   qrender "$sc-128" "$sc" --voxels 128
-  qrender "$sc-128-c16" "$sc" --voxels 128 --cones 16
+  qrender "$sc-128-cones" "$sc" --voxels 128 --gather-trace cones
 done
 for n in 64 128 256; do qrender "indirect-$n" cornell-lights --voxels "$n" --output indirect; done
 qrender indirect-128-beta1 cornell-lights --voxels 128 --output indirect --cone-step 1

@@ -25,11 +25,13 @@ table="$out/gi-${size}px-${voxels}.md"
 } > "$table"
 cases=(
   "defaults|"
-  "paper: 1 bounce by cones, emitters by cones, every pixel traced, voxels lit every way, eq. 5 at voxels|--bounces 1 --bounce-trace cones --emitters cones --cone-spin off --voxel-backs-dark off --normal-weighted on --trace-scale 1"
+  "paper: 1 bounce and the gather by cones, emitters by cones, every pixel traced, voxels lit every way, eq. 5 at voxels|--bounces 1 --bounce-trace cones --gather-trace cones --emitters cones --cone-spin off --voxel-backs-dark off --normal-weighted on --trace-scale 1"
   "defaults, the bounce by cones|--bounce-trace cones"
-  "defaults, the six cones not turned|--cone-spin off"
-  "defaults, 16 cones|--cones 16"
+  "defaults, 32 rays per pixel|--gather-rays 32"
   "defaults, every pixel traced|--trace-scale 1"
+  "the gather by the six cones|--gather-trace cones"
+  "the gather by the six cones, not turned|--gather-trace cones --cone-spin off"
+  "the gather by 16 cones|--gather-trace cones --cones 16"
 )
 for scene in cornell-lights cornell-emissive; do
   for c in "${cases[@]}"; do

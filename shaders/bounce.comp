@@ -145,7 +145,8 @@ void main() {
     uint seed = raySeed(v);
     vec3 other;
     vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed,
-                                              axis >= 0 ? max(pc.flags.w / 4u, 4u) : 0u, rayHash(seed), other);
+                                              axis >= 0 ? max(pc.flags.w / 4u, 4u) : 0u, rayHash(seed), pc.flags.z != 0u,
+                                              other);
     other *= albedo;
     // A one-sided voxel's light as half floats: in RGB9E5 a bounce's increment
     // fell under the step in a bright closed room and the series stalled 1 %

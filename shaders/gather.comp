@@ -10,6 +10,9 @@
 // along the reflected view direction, and ambient occlusion from the diffuse
 // cones. Runs at the trace resolution (--trace-scale); the G-buffer is read at
 // the pixel each trace pixel stands for.
+// Built with RAYS (--gather-trace rays, a fitted grid's): the indirect diffuse
+// light and AO from cosine rays marched voxel by voxel through the radiance
+// volume (lib/voxel_rays.glsl) instead of the cones; specular keeps its cone.
 #define CONE_USE_RADIANCE_VOLUME
 #define CONE_NEAR_SIDES  // near samples read every voxel for thin walls and show the side facing them
 layout(local_size_x = GATHER_GROUP, local_size_y = GATHER_GROUP) in;
@@ -33,10 +36,24 @@ layout(set = 0, binding = BIND_GATHER_DEPTH) uniform sampler2D gDepth;
 layout(set = 0, binding = BIND_GATHER_OUT_DIFFUSE, rgba16f) uniform writeonly image2D outDiffuse;
 layout(set = 0, binding = BIND_GATHER_OUT_SPECULAR, rgba16f) uniform writeonly image2D outSpecular;
 layout(push_constant) uniform Push { GatherPush pc; };
+#ifdef DVSGI_RAYS
+#include "shared/bounce_pass.h"
+#include "shared/voxel_list_pass.h"
+layout(set = 0, binding = BIND_GATHER_RAY_SIDES, rgba32ui) uniform readonly uimage3D sides;
+layout(set = 0, binding = BIND_GATHER_RAY_NORMALS, r32ui) uniform readonly uimage3D rayNormals;
+layout(set = 0, binding = BIND_GATHER_RAY_OCCUPANCY, std430) readonly buffer RayOccupancy { uint rayOccupancy[]; };
+VOXEL_INDEX_BLOCK(BIND_GATHER_RAY_INDEX, readonly);
+#define RAY_RADIANCE(c) texelFetch(radianceVolume, c, 0)
+#endif
 
 #include "lib/brdf.glsl"
 #include "lib/cone_trace.glsl"
 #include "lib/cone_sets.glsl"
+#ifdef DVSGI_RAYS
+#include "lib/voxel_sides.glsl"
+#include "lib/voxel_index.glsl"
+#include "lib/voxel_rays.glsl"
+#endif
 
 // Roughness -> specular cone half-angle: tan(half-angle) = roughness^2 (the
 // GGX alpha), clamped below by the minimum aperture.
@@ -53,8 +70,17 @@ void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, float turn, ou
     vec3 origin = P + N * originHeight;
 
     float occlusion;
+#ifdef DVSGI_RAYS
+    // The same rays every frame: a still image does not flicker. The resolve's
+    // 3x3 tent averages each pixel's rays with its neighbours'.
+    float s = grid.originSize.w;
+    uvec2 px = gl_GlobalInvocationID.xy;
+    vec3 E = PI * pixelRaysCosine((P - grid.originSize.xyz) / s, N, uintBitsToFloat(pc.rays.y), pc.rays.x,
+                                  rayHash(px.x | px.y << 16u), pc.params.y, pc.rays.z != 0u, occlusion);
+#else
     vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
                                        : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, turn, occlusion);
+#endif
     // Demodulated: the albedo base.rgb (1 - metallic) multiplies it in the
     // composite, after upsampling and temporal accumulation, so those filter
     // the smooth irradiance and never blur or smear the textures.

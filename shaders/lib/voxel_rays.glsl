@@ -1,10 +1,15 @@
 // Diffuse rays through the voxel grid for the voxel bounce (bounce.comp's
-// DVSGI_RAY_TRACE): each ray walks the grid voxel by voxel (every voxel it
+// DVSGI_RAY_TRACE) and for the per-pixel gather by rays (gather.comp's
+// DVSGI_RAYS): each ray walks the grid voxel by voxel (every voxel it
 // crosses, Amanatides & Woo) and takes the radiance of the first occupied
 // one, so a wall one voxel thick stops it however it meets the wall. Needs
-// `grid`, the radiance volume `outRadiance` (read only in that pass), the
-// side light `sides`, the packed normals `rayNormals`, the occupancy bits
-// `rayOccupancy` and lib/voxel_index.glsl.
+// `grid`, the radiance volume read through RAY_RADIANCE(c) (by default the
+// storage image `outRadiance`, read only in that pass), the side light
+// `sides`, the packed normals `rayNormals`, the occupancy bits `rayOccupancy`
+// and lib/voxel_index.glsl.
+#ifndef RAY_RADIANCE
+#define RAY_RADIANCE(c) imageLoad(outRadiance, c)
+#endif
 
 // A normal as the rays keep it per slot (BIND_BOUNCE_RAY_NORMALS): each
 // axis rounded to steps of 1/RAY_NORMAL_SCALE, offset to be unsigned.
@@ -90,13 +95,14 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
 // in front of (that voxel's light), or where it leaves the grid (nothing).
 // Empty space is crossed a whole cell at a time, sixteen voxels, eight, four
 // or two, wherever the occupancy bits show the cell empty (`offsets`: each
-// level's rayOccupancyOffset). A ray that starts inside another surface's
+// level's rayOccupancyOffset). With `backsDark` a one-sided voxel met from
+// behind shows the ray no light (seenFromFront, as the filter shows the cones). A ray that starts inside another surface's
 // voxel meets that surface's back at no distance: no light (a floor under a
 // box standing on it). Taking that voxel's radiance instead made two
 // surfaces a voxel apart light each other without loss: with albedo 1 (the
 // Cornell box's white) the light between them never converged.
 bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, int N, uvec4 offsets,
-                  out vec3 seen) {
+                  bool backsDark, out vec3 seen) {
     seen = vec3(0.0);
     ivec3 c = ivec3(floor(p + d * t));
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return true;
@@ -110,13 +116,14 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
     } else if (cellEmpty(c, 0u, 0u)) {
         size = 2.0;
     } else {
-        vec4 r = imageLoad(outRadiance, c);
+        vec4 r = RAY_RADIANCE(c);
         if (r.a > 0.0) {
             // Its slot and normal, read once for the rules below.
             uint slot = voxelSlotAt(c);
             vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
             if (!onOwnSurface(c, nc, self, n) && (i == 0 || !passesInFront(c, nc, p, d, inv, t))) {
                 if (i != 0) seen = radianceSeen(slot, r, d);
+                if (backsDark && sideCodeOfOpacity(r.a) == SIDE_ONE) seen *= seenFromFront(nc, d);
                 return true;
             }
         }
@@ -138,7 +145,7 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
 // ray, once per ray, where now it waits once for the longest walk over all
 // its rays.
 vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint backCount, uint backSeed,
-                     out vec3 back) {
+                     bool backsDark, out vec3 back) {
     int N = int(grid.dims.x);
     vec3 self = vec3(v) + 0.5;
     vec3 tx = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
@@ -166,7 +173,7 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
             t = 0.0;
         }
         vec3 seen;
-        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, N, offsets, seen);
+        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, N, offsets, backsDark, seen);
         ++step;
         if (ends || step >= 4 * N) {
             if (ray < count) front += seen;
@@ -177,4 +184,62 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
     }
     back /= float(max(backCount, 1u));
     return front / float(max(count, 1u));
+}
+
+// The per-pixel gather by rays: the mean radiance over `count`
+// cosine-distributed rays about n from surface point p (voxel units), E / pi,
+// and in `occlusion` the mean over the rays of f(r) = 1 / (1 + aoLambda r)
+// where they stop at a surface r voxels away (0 where they leave the grid).
+// The rays start `offset` voxels off p along n; voxels of p's own surface are
+// passed as for a voxel's rays. A ray that starts in another surface's voxel
+// (a floor pixel beside a wall) passes it when it starts in front of that
+// voxel's plane and moves away from it, and otherwise meets it there: a
+// voxel's rays start at its centre, where taking no light is right, but a
+// pixel lies anywhere on its surface, and a band a voxel wide beside every
+// wall went dark.
+vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float aoLambda, bool backsDark,
+                     out float occlusion) {
+    int N = int(grid.dims.x);
+    vec3 tx = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
+    vec3 b = cross(n, tx);
+    vec2 shift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
+    vec3 origin = p + n * offset;
+    uvec4 offsets = uvec4(0u, rayOccupancyOffset(grid.dims.x, 1u), rayOccupancyOffset(grid.dims.x, 2u),
+                          rayOccupancyOffset(grid.dims.x, 3u));
+    vec3 sum = vec3(0.0), d = n, inv = vec3(1.0);
+    occlusion = 0.0;
+    float t = 0.0;
+    int step = 0;
+    uint ray = 0u;
+    // One loop over all rays' steps, as in voxelRaysCosine.
+    for (int k = 0; ray < count && k < int(count) * 4 * N; ++k) {
+        if (step == 0) {
+            vec2 u = fract(shift + float(ray) * vec2(RAY_R2_U, RAY_R2_V));
+            float rad = sqrt(u.x), phi = TWO_PI * u.y;
+            d = normalize(tx * (rad * cos(phi)) + b * (rad * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
+            inv = 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7)));
+            t = 0.0;
+            ivec3 c = ivec3(floor(origin));
+            if (all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(N))) && RAY_RADIANCE(c).a > 0.0) {
+                uint slot = voxelSlotAt(c);
+                vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+                if (!onOwnSurface(c, nc, p, n) && dot(origin - (vec3(c) + 0.5), nc) > 0.0 && dot(d, nc) >= 0.0)
+                    t = exitDistance(origin, inv, vec3(c), 1.0) + 1e-3;
+            }
+        }
+        vec3 seen;
+        // Step 1 on: the first voxel met is a hit with its light (or passed in front of).
+        bool ends = voxelRayStep(origin, d, inv, t, 1, p, n, N, offsets, backsDark, seen);
+        ++step;
+        if (ends || step >= 4 * N) {
+            sum += seen;
+            ivec3 c = ivec3(floor(origin + d * t));
+            bool inside = all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(N)));
+            if (ends && inside) occlusion += 1.0 / (1.0 + aoLambda * t);
+            ++ray;
+            step = 0;
+        }
+    }
+    occlusion /= float(max(count, 1u));
+    return sum / float(max(count, 1u));
 }

@@ -23,12 +23,6 @@ DVSGI_CONST(uint, BIND_ANISO_SIDES, 6);   // per-slot side light (lib/voxel_side
 // Both passes over level 0: the voxels' attributes, for their mean normals.
 DVSGI_CONST(uint, BIND_ANISO_ACCUM, 8);
 
-// A one-sided voxel shows its light to the rays that meet its front: fully
-// while the travel direction t has dot(n, t) <= ANISO_BACK_FADE_START (seen
-// face on, or edge on), none from ANISO_BACK_FADE_END (seen from behind).
-DVSGI_CONST(float, ANISO_BACK_FADE_START, 0.1);
-DVSGI_CONST(float, ANISO_BACK_FADE_END, 0.35);
-
 struct AnisoPush {
     uvec4 sizes;  // x target size (voxels per edge); y (passes over level 0) 1: a voxel seen from behind
                   // shows no light (seenFront); zw unused

@@ -12,6 +12,7 @@ DVSGI_BEGIN
 struct BouncePush {
     ConeParams cone;
     uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS), y (clipmap) the voxels' level,
+                  // z 1: a one-sided voxel a ray meets from behind shows it no light (the ray pass),
                   // w rays per voxel (the ray pass)
     // Temporal blending of the reflected light (BIND_BOUNCE_HISTORY): x this
     // frame's history tag (0 = no blending, nothing read or written), y the tag

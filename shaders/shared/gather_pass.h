@@ -16,8 +16,12 @@ struct GatherPush {
     uvec4 flags;      // x 1: turn the six cones per pixel (coneSpinTurn, resolved by cone_resolve.comp),
                       // 2 + k: every pixel by k steps (tests), 0: not at all;
                       // y specular on, z trace width, w trace height
+    // The gather by rays (DVSGI_RAYS): x rays per pixel, y their origin's
+    // offset along the normal (voxels, float bits), z 1: a one-sided voxel met
+    // from behind shows a ray no light (--voxel-backs-dark), w unused.
+    uvec4 rays;
 };
-DVSGI_CHECK_SIZE(GatherPush, 64);
+DVSGI_CHECK_SIZE(GatherPush, 80);
 
 DVSGI_CONST(uint, BIND_GATHER_FRAME, 3);
 DVSGI_CONST(uint, BIND_GATHER_BASE, 4);
@@ -26,6 +30,14 @@ DVSGI_CONST(uint, BIND_GATHER_DEPTH, 6);
 DVSGI_CONST(uint, BIND_GATHER_OUT_DIFFUSE, 7);   // rgb indirect diffuse radiance, a ambient occlusion
 DVSGI_CONST(uint, BIND_GATHER_OUT_SPECULAR, 8);  // rgb specular radiance
 DVSGI_CONST(uint, BIND_GATHER_RADIANCE, 9);      // radiance volume (sampled)
+
+// The gather by rays (DVSGI_RAYS) reads what the voxel bounce's rays read
+// (shared/bounce_pass.h): the side light, the slot index, the packed normals
+// and the occupancy bits (vxgi::RayData).
+DVSGI_CONST(uint, BIND_GATHER_RAY_SIDES, 10);
+DVSGI_CONST(uint, BIND_GATHER_RAY_INDEX, 11);
+DVSGI_CONST(uint, BIND_GATHER_RAY_NORMALS, 12);
+DVSGI_CONST(uint, BIND_GATHER_RAY_OCCUPANCY, 13);
 
 DVSGI_CONST(uint, GATHER_GROUP, 8);
 

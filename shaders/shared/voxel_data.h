@@ -54,6 +54,14 @@ DVSGI_CONST(uint, SIDE_SEVERAL, 4);  // two-sided along several axes: an edge or
 // directional volumes there instead.
 DVSGI_CONST(float, TWO_SIDED_OPACITY_STEP, 0.00048828125);
 
+// A one-sided voxel shows its light to the rays that meet its front (with
+// --voxel-backs-dark, the default; the filter's directional volumes and the
+// rays of the bounce and the gather): fully while the travel direction t has
+// dot(n, t) <= VOXEL_BACK_FADE_START (seen face on, or edge on), none from
+// VOXEL_BACK_FADE_END (seen from behind); lib/voxel_sides.glsl, seenFromFront.
+DVSGI_CONST(float, VOXEL_BACK_FADE_START, 0.1);
+DVSGI_CONST(float, VOXEL_BACK_FADE_END, 0.35);
+
 // Slots per row of the per-slot images (attributes, voxel direct light);
 // capacities are whole rows.
 DVSGI_CONST(uint, VOXEL_SLOT_ROW, 4096);

@@ -1,6 +1,7 @@
 #include "render/gather.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "gpu/tracker.h"
@@ -11,6 +12,7 @@
 #include "shared/upsample_pass.h"
 #include "shared/voxel_data.h"
 #include "shared/scene_data.h"
+#include "vxgi/bounce.h"
 #include "vxgi/clipmap.h"
 #include "vxgi/volumes.h"
 
@@ -25,6 +27,9 @@ const uint32_t kGather[] = {
 };
 const uint32_t kGatherClipmap[] = {
 #include "shaders/gather_clipmap.comp.inc"
+};
+const uint32_t kGatherRays[] = {
+#include "shaders/gather_rays.comp.inc"
 };
 const uint32_t kConeResolve[] = {
 #include "shaders/cone_resolve.comp.inc"
@@ -53,6 +58,12 @@ GatherPass::GatherPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     layout.pushConstantStages = cs;
     gather_ = gpu::Pipeline(ctx, gpu::Spirv(kGather), layout, "cone tracing");
     if (clipmap) clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
+    gpu::LayoutDesc rays = layout;
+    rays.bindings.push_back({sh::BIND_GATHER_RAY_SIDES, storage, cs});
+    rays.bindings.push_back({sh::BIND_GATHER_RAY_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rays.bindings.push_back({sh::BIND_GATHER_RAY_NORMALS, storage, cs});
+    rays.bindings.push_back({sh::BIND_GATHER_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rayGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherRays), rays, "cone tracing (rays)");
 
     gpu::LayoutDesc resolve;
     resolve.bindings = {{sh::BIND_RESOLVE_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
@@ -101,9 +112,11 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
                         const GatherSettings& s, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const {
     const bool reduced = out.traceDiffuse != nullptr;
     const gpu::Image& outD = reduced ? *out.traceDiffuse : out.diffuse;
-    // With the turned six cones the gather writes the turned term, resolved into outD.
-    const bool spin = s.spin && cone.coneSet == sh::CONE_SET_6;
-    const bool resolve = spin && s.fixedTurn < 0;
+    const bool rays = in.rays != nullptr && in.clip == nullptr && s.trace == GatherTrace::Rays;
+    // With the turned six cones the gather writes the turned term, resolved
+    // into outD; rays differ from pixel to pixel and are resolved the same way.
+    const bool spin = !rays && s.spin && cone.coneSet == sh::CONE_SET_6;
+    const bool resolve = (spin && s.fixedTurn < 0) || (rays && s.spin);
     const gpu::Image& tracedD = resolve ? out.turnedDiffuse : outD;
     const gpu::Image& outS = reduced ? *out.traceSpecular : out.specular;
     const GBuffer& g = in.gbuffer;
@@ -120,9 +133,14 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
         if (in.clip)
             tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
                 .image(in.clip->atlases.directional, gpu::use::ComputeRead);
+        if (rays)
+            tracker.image(v.sides, gpu::use::ComputeRead)
+                .image(in.rays->normals, gpu::use::ComputeRead)
+                .buffer(v.index, gpu::use::BufferComputeRead)
+                .buffer(in.rays->occupancy, gpu::use::BufferComputeRead);
         tracker.image(tracedD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
         const VkSampler volumeSampler = in.samplers.volume.handle();
-        const gpu::Pipeline& pipeline = in.clip ? clipGather_ : gather_;
+        const gpu::Pipeline& pipeline = in.clip ? clipGather_ : rays ? rayGather_ : gather_;
         gpu::bind(cmd, pipeline);
         gpu::Descriptors d;
         if (in.clip) {
@@ -141,14 +159,20 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .sampledImage(sh::BIND_GATHER_NORMAL, g.normal.view(), point)
             .sampledImage(sh::BIND_GATHER_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
             .storageImage(sh::BIND_GATHER_OUT_DIFFUSE, tracedD.view())
-            .storageImage(sh::BIND_GATHER_OUT_SPECULAR, outS.view())
-            .push(ctx_, cmd, pipeline);
+            .storageImage(sh::BIND_GATHER_OUT_SPECULAR, outS.view());
+        if (rays)
+            d.storageImage(sh::BIND_GATHER_RAY_SIDES, v.sides.view())
+                .storageBuffer(sh::BIND_GATHER_RAY_INDEX, v.index.handle())
+                .storageImage(sh::BIND_GATHER_RAY_NORMALS, in.rays->normals.view())
+                .storageBuffer(sh::BIND_GATHER_RAY_OCCUPANCY, in.rays->occupancy.handle());
+        d.push(ctx_, cmd, pipeline);
         sh::GatherPush push{};
         // Cones may run as far as the largest grid reaches.
         push.cone = vxgi::gpuCone(cone, in.clip ? in.clip->coarsest : v.grid);
         push.params = glm::vec4(0.0f, s.aoLambda, 0.0f, std::tan(glm::radians(s.minSpecularDegrees)));
         const uint32_t turn = !spin ? 0u : resolve ? 1u : 2u + uint32_t(s.fixedTurn) % sh::CONE_SPIN_STEPS;
         push.flags = glm::uvec4(turn, s.specular ? 1u : 0u, traceWidth, traceHeight);
+        push.rays = glm::uvec4(s.rays, std::bit_cast<uint32_t>(s.rayOffsetVoxels), in.backsDark ? 1u : 0u, 0u);
         gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(traceWidth, sh::GATHER_GROUP), gpu::groupCount(traceHeight, sh::GATHER_GROUP), 1);
     }

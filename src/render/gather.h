@@ -14,12 +14,24 @@ class Tracker;
 namespace dvsgi::vxgi {
 class VoxelVolumes;
 struct ClipTrace;
+struct RayData;
 }
 
 namespace dvsgi::render {
 
+// How each pixel gathers its indirect diffuse light.
+enum class GatherTrace {
+    Cones,  // the cone set through the filtered volumes (the paper)
+    Rays,   // cosine rays marched voxel by voxel through the radiance volume (gather.comp's RAYS)
+};
+
 // What the gather adds to the shared cone settings (RenderSettings::cones).
 struct GatherSettings {
+    // Rays on a fitted grid (docs/quality.md, "The gather by rays"); with
+    // clipmap levels or the pv voxelizer the cones (GatherInputs::rays null).
+    GatherTrace trace = GatherTrace::Rays;
+    uint32_t rays = 16;  // per traced pixel
+    float rayOffsetVoxels = 1.0f;  // ray origins off the surface along its normal
     float aoLambda = 0.5f;        // f(r) = 1 / (1 + lambda r), r in voxels
     bool specular = true;
     float minSpecularDegrees = 1.0f;  // half-angle of the narrowest specular cone, degrees
@@ -41,6 +53,10 @@ struct GatherInputs {
     const Samplers& samplers;
     const gpu::Buffer& frame;
     const vxgi::ClipTrace* clip = nullptr;  // clipmap levels to trace instead of `volumes`
+    // The voxels' packed normals and occupancy bits for GatherTrace::Rays,
+    // recorded this frame (vxgi::BouncePass::recordRayData); null: cones.
+    const vxgi::RayData* rays = nullptr;
+    bool backsDark = true;  // rays: a one-sided voxel met from behind shows no light (--voxel-backs-dark)
 };
 
 // The cone-traced terms at internal size, and at trace size when the trace
@@ -69,7 +85,7 @@ private:
                        const gpu::Image& resolved, gpu::GpuTimers* timers) const;
 
     const gpu::Context& ctx_;
-    gpu::Pipeline gather_, clipGather_, resolve_, upsample_;
+    gpu::Pipeline gather_, clipGather_, rayGather_, resolve_, upsample_;
 };
 
 }  // namespace dvsgi::render

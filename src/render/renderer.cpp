@@ -139,6 +139,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         inject_ = std::make_unique<vxgi::InjectPass>(ctx);
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx, clipmap);
+        rayData_ = std::make_unique<vxgi::RayData>();
         temporal_ = std::make_unique<TemporalIndirectPass>(ctx);
     }
     for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
@@ -343,7 +344,12 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
                              trace ? &*trace : nullptr, patchCount_ > 0};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
-        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr};
+        // The gather's rays read this frame's voxels' normals and occupancy,
+        // recorded again: the bounce's (if any ran) may be from a bounce
+        // before this frame's voxels changed, or not recorded at all.
+        if (gatherRays()) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
+        const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr,
+                              gatherRays() ? rayData_.get() : nullptr, settings_.voxelLight.backsDark};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
                                 f.reducedTrace() ? &f.traceSpecular : nullptr, f.turnedDiffuse};
         gather_->record(cmd, tracker_, in, out, settings_.gather, settings_.cones, t);

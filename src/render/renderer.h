@@ -107,6 +107,7 @@ class InjectPass;
 class AnisoFilterPass;
 class BouncePass;
 class ClipScrollPass;
+struct RayData;
 }
 namespace dvsgi::render {
 
@@ -152,8 +153,10 @@ public:
     const vxgi::VoxelVolumes* volumes() const { return voxelizer_ ? volumes_.get() : nullptr; }
     // Whether the voxel bounce marches rays (bounceTracesRays).
     bool bounceRays() const;
+    // Whether the per-pixel gather marches rays (gatherTracesRays).
+    bool gatherRays() const;
     // The voxel data per grid voxel (VoxelVolumes::bytesPerGridVoxel, with the rays' results when they run).
-    double voxelBytesPerGridVoxel() const { return volumes_->bytesPerGridVoxel(bounceRays()); }
+    double voxelBytesPerGridVoxel() const { return volumes_->bytesPerGridVoxel(bounceRays(), gatherRays()); }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
     std::vector<const vxgi::VoxelVolumes*> levelVolumes() const;
     // --clipmap: what its cones sample (left in gpu::use::ComputeRead after a frame); else null.
@@ -262,6 +265,7 @@ private:
     std::unique_ptr<vxgi::InjectPass> inject_;
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
+    std::unique_ptr<vxgi::RayData> rayData_;  // what the bounce's and the gather's rays read
     // --clipmap: one entry per level (level 0's volumes and header are
     // volumes_ and listHeader_); empty for a fitted grid.
     struct ClipLevel {
@@ -329,6 +333,12 @@ bool needsNewRenderer(const RenderSettings& a, const RenderSettings& b);
 inline bool bounceTracesRays(const RenderSettings& s) {
     return s.voxelLight.bounceTrace == vxgi::BounceTrace::Rays && s.clipmap.levels == 0 &&
            s.voxelizer != vxgi::VoxelizerKind::Pv;
+}
+
+// Whether the per-pixel gather marches rays: --gather-trace rays on a fitted
+// grid (not with --clipmap or --voxelizer pv, which gather with cones).
+inline bool gatherTracesRays(const RenderSettings& s) {
+    return s.gather.trace == GatherTrace::Rays && s.clipmap.levels == 0 && s.voxelizer != vxgi::VoxelizerKind::Pv;
 }
 
 // Camera matrices for an image of the given size (Vulkan clip space, Y flipped

@@ -14,6 +14,8 @@ namespace sh = dvsgi::shader;
 
 bool Renderer::bounceRays() const { return bounceTracesRays(settings_); }
 
+bool Renderer::gatherRays() const { return voxelizer_ && gatherTracesRays(settings_); }
+
 // What a bounce's cones trace with --clipmap: the levels through the windows
 // their directional volumes were last filtered in.
 std::optional<vxgi::ClipTrace> Renderer::bounceTrace() const {
@@ -43,7 +45,7 @@ void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::Voxe
     }
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
     const uint32_t rays = bounceRays() ? vl.bounceRays : 0u;
-    bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, rays,
+    bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, rays, rayData_.get(), vl.backsDark,
                     withStats ? bounceStats_.get() : nullptr, timers_.get(), trace, uint32_t(l),
                     blend ? &history : nullptr);
 }

@@ -54,7 +54,8 @@ std::vector<MemoryItem> Renderer::memory() const {
         items.push_back({"voxel radiance", volumes_->radiance.memorySize()});
         items.push_back({"voxel direct light", volumes_->direct.memorySize()});
         items.push_back({"voxel side light", volumes_->sides.memorySize()});
-        if (bounce_->rayBytes()) items.push_back({"voxel bounce rays' light, normals and occupancy", bounce_->rayBytes()});
+        if (bounce_->rayBytes()) items.push_back({"voxel bounce rays' light", bounce_->rayBytes()});
+        if (rayData_->bytes()) items.push_back({"voxel rays' normals and occupancy", rayData_->bytes()});
         items.push_back({"directional volumes", volumes_->directional.memorySize()});
         items.push_back({"occupied-voxel list", volumes_->list.size()});
         // --clipmap: the items above are level 0's; each coarser level holds

@@ -113,8 +113,44 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
 
 uint32_t BouncePass::statsFloats(uint32_t slots) { return voxelListMaxGroups(slots) * sh::BOUNCE_STATS_FLOATS; }
 
+void BouncePass::recordRayData(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, RayData& rd,
+                               gpu::GpuTimers* timers) const {
+    gpu::GpuTimerScope timer(timers, cmd, "voxel rays' normals");
+    recordRayNormals(cmd, tracker, v, rd);
+}
+
+void BouncePass::recordRayNormals(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v,
+                                  RayData& rd) const {
+    const gpu::ImageDesc want = rayNormalsImageDesc(v.slots);
+    if (!rd.normals.handle() || rd.normals.desc().extent.height != want.extent.height)
+        rd.normals = gpu::Image(ctx_, want);
+    const VkDeviceSize occupancyBytes = rayOccupancyBytes(v.grid.n);
+    if (!rd.occupancy.handle() || rd.occupancy.size() != occupancyBytes)
+        rd.occupancy = gpu::Buffer(ctx_, occupancyBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   gpu::MemoryUse::Device, "voxel rays' occupancy bits");
+    // Set bit by bit from this frame's voxels.
+    tracker.buffer(rd.occupancy, gpu::use::BufferTransferWrite).flush(cmd);
+    vkCmdFillBuffer(cmd, rd.occupancy.handle(), 0, VK_WHOLE_SIZE, 0);
+    tracker.buffer(rd.occupancy, gpu::use::BufferComputeReadWrite)
+        .buffer(v.list, gpu::use::IndirectComputeRead)
+        .image(v.accum, gpu::use::ComputeRead)
+        .image(rd.normals, gpu::use::ComputeWrite)
+        .flush(cmd);
+    gpu::bind(cmd, rayNormalsPipeline_);
+    gpu::Descriptors()
+        .uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())
+        .storageImage(sh::BIND_BOUNCE_ACCUM, v.accum.view())
+        .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
+        .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rd.normals.view())
+        .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rd.occupancy.handle())
+        .push(ctx_, cmd, rayNormalsPipeline_);
+    dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
+    tracker.image(rd.normals, gpu::use::ComputeRead).buffer(rd.occupancy, gpu::use::BufferComputeRead).flush(cmd);
+}
+
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
-                        const ConeSettings& cone, uint32_t rayCount, const gpu::Buffer* stats,
+                        const ConeSettings& cone, uint32_t rayCount, RayData* rayData, bool backsDark,
+                        const gpu::Buffer* stats,
                         gpu::GpuTimers* timers, const ClipTrace* clip, uint32_t level,
                         const VoxelHistory* history) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel bounce");
@@ -133,26 +169,16 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         vkCmdFillBuffer(cmd, stats->handle(), 0, VK_WHOLE_SIZE, 0);
         tracker.buffer(*stats, gpu::use::BufferComputeWrite);
     }
-    const bool rays = rayCount > 0 && !clip;
+    const bool rays = rayCount > 0 && !clip && rayData;
     if (rays) {
         const gpu::ImageDesc want = tracedImageDesc(v.slots);
-        if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) {
-            traced_ = gpu::Image(ctx_, want);
-            rayNormals_ = gpu::Image(ctx_, rayNormalsImageDesc(v.slots));
-        }
-        const VkDeviceSize occupancyBytes = rayOccupancyBytes(v.grid.n);
-        if (!rayOccupancy_.handle() || rayOccupancy_.size() != occupancyBytes)
-            rayOccupancy_ = gpu::Buffer(ctx_, occupancyBytes,
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        gpu::MemoryUse::Device, "voxel bounce rays' occupancy bits");
-        // Set bit by bit from this frame's voxels.
-        tracker.buffer(rayOccupancy_, gpu::use::BufferTransferWrite).flush(cmd);
-        vkCmdFillBuffer(cmd, rayOccupancy_.handle(), 0, VK_WHOLE_SIZE, 0);
-        tracker.buffer(rayOccupancy_, gpu::use::BufferComputeReadWrite);
+        if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) traced_ = gpu::Image(ctx_, want);
+        tracker.flush(cmd);
+        recordRayNormals(cmd, tracker, v, *rayData);
         tracker.buffer(v.index, gpu::use::BufferComputeRead);
         // The rays read the radiance and side light that the shading pass after them writes.
         tracker.image(v.radiance, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);
-        tracker.image(traced_, gpu::use::ComputeWrite).image(rayNormals_, gpu::use::ComputeWrite);
+        tracker.image(traced_, gpu::use::ComputeWrite);
     }
     tracker.flush(cmd);
     const gpu::Pipeline& pipeline = rays ? rayShadePipeline_ : (clip ? clipPipeline_ : pipeline_);
@@ -176,19 +202,15 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     if (rays) {
         d.storageImage(sh::BIND_BOUNCE_TRACED, traced_.view())
             .storageBuffer(sh::BIND_BOUNCE_INDEX, v.index.handle())
-            .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rayNormals_.view())
-            .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rayOccupancy_.handle());
+            .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rayData->normals.view())
+            .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rayData->occupancy.handle());
     }
     const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
                                                   std::bit_cast<uint32_t>(history->alpha), 0u)
                                      : glm::uvec4(0u);
     const sh::BouncePush push{gpuCone(cone, clip ? clip->coarsest : v.grid),
-                              glm::uvec4(stats ? 1u : 0u, level, 0u, rays ? rayCount : 0u), blend};
+                              glm::uvec4(stats ? 1u : 0u, level, backsDark ? 1u : 0u, rays ? rayCount : 0u), blend};
     if (rays) {
-        gpu::bind(cmd, rayNormalsPipeline_);
-        d.push(ctx_, cmd, rayNormalsPipeline_);
-        dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
-        tracker.image(rayNormals_, gpu::use::ComputeRead).buffer(rayOccupancy_, gpu::use::BufferComputeRead).flush(cmd);
         gpu::bind(cmd, rayPipeline_);
         d.push(ctx_, cmd, rayPipeline_);
         gpu::pushConstants(cmd, rayPipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);

@@ -42,6 +42,17 @@ gpu::ImageDesc rayNormalsImageDesc(uint32_t slots);
 // Bytes of the rays' occupancy bits of an n^3 grid (BIND_BOUNCE_RAY_OCCUPANCY).
 VkDeviceSize rayOccupancyBytes(uint32_t n);
 
+// What rays read besides the radiance (--bounce-trace rays, --gather-trace
+// rays): each voxel's packed normal per slot (BIND_BOUNCE_RAY_NORMALS) and
+// which coarse cells hold voxels (BIND_BOUNCE_RAY_OCCUPANCY), recorded from
+// this frame's voxels by BouncePass::recordRayData; made at the first
+// recording and again when the slot capacity or the grid's size changes.
+struct RayData {
+    gpu::Image normals;
+    gpu::Buffer occupancy;
+    VkDeviceSize bytes() const { return normals.handle() ? normals.memorySize() + occupancy.size() : 0; }
+};
+
 class BouncePass {
 public:
     // clipmap: also the pipeline that traces clipmap levels (compiled only when asked for).
@@ -54,29 +65,33 @@ public:
     // levels from it up (clip's ConeLevels and volumes: the previous frame's
     // windows when the bounce feeds back); its directional volumes are read.
     // With `history`, each voxel's new radiance is blended with its last one.
-    // `rays` > 0: that many rays per voxel instead of the cones (not with `clip`).
+    // `rays` > 0: that many rays per voxel instead of the cones (not with
+    // `clip`), packing the voxels' normals and cells into `rayData` first;
+    // `backsDark`: a one-sided voxel a ray meets from behind shows it no light.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, VkSampler volumeSampler,
-                const ConeSettings& cone, uint32_t rays, const gpu::Buffer* stats, gpu::GpuTimers* timers,
-                const ClipTrace* clip = nullptr, uint32_t level = 0, const VoxelHistory* history = nullptr) const;
+                const ConeSettings& cone, uint32_t rays, RayData* rayData, bool backsDark, const gpu::Buffer* stats,
+                gpu::GpuTimers* timers, const ClipTrace* clip = nullptr, uint32_t level = 0,
+                const VoxelHistory* history = nullptr) const;
+    // Packs each occupied voxel's normal and marks its cells in `rayData`
+    // (made or remade to fit `volumes`), for the rays of the bounce and the gather.
+    void recordRayData(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, RayData& rayData,
+                       gpu::GpuTimers* timers) const;
     static uint32_t statsFloats(uint32_t slots);
     // Bytes of the rays' per-slot results (0 until rays were traced).
-    VkDeviceSize rayBytes() const {
-        return traced_.handle() ? traced_.memorySize() + rayNormals_.memorySize() + rayOccupancy_.size() : 0;
-    }
+    VkDeviceSize rayBytes() const { return traced_.handle() ? traced_.memorySize() : 0; }
 
 private:
+    void recordRayNormals(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes,
+                          RayData& rayData) const;
+
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_, clipPipeline_;
     gpu::Buffer noStats_;     // bound when no statistics are asked for (the binding must stay valid)
     gpu::Image noHistory_;    // bound when nothing is blended
     gpu::Pipeline rayNormalsPipeline_, rayPipeline_, rayShadePipeline_;
-    // What the rays gathered, per slot (BIND_BOUNCE_TRACED), and the normals
-    // they read (BIND_BOUNCE_RAY_NORMALS): made at the first ray bounce and
-    // again when the slot capacity changes.
-    mutable gpu::Image traced_, rayNormals_;
-    // Which cells the rays may cross whole (BIND_BOUNCE_RAY_OCCUPANCY), made
-    // at the first ray bounce and again when the grid's size changes.
-    mutable gpu::Buffer rayOccupancy_;
+    // What the rays gathered, per slot (BIND_BOUNCE_TRACED): made at the
+    // first ray bounce and again when the slot capacity changes.
+    mutable gpu::Image traced_;
 };
 
 }  // namespace dvsgi::vxgi

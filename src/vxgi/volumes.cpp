@@ -67,7 +67,7 @@ uint32_t roundSlotCapacity(uint32_t n, uint64_t wanted) {
 
 uint32_t defaultSlotCapacity(uint32_t n) { return roundSlotCapacity(n, 12ull * n * n); }
 
-std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRays) {
+std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRays, bool gatherRays) {
     const uint64_t n3 = uint64_t(n) * n * n;
     uint64_t directional = 0;
     for (uint64_t s = n / 2; s >= 1; s /= 2) directional += s * s * s * 8;
@@ -80,19 +80,19 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRa
         {"directional volumes (6, with mips)", "R16G16B16A16_SFLOAT", directional * 6},
         {"occupied-voxel list", "uint32 buffer", voxelListBytes(slots)},
     };
-    // BouncePass's (tracedImageDesc, rayNormalsImageDesc, rayOccupancyBytes).
-    if (bounceRays) {
+    // BouncePass's (tracedImageDesc) and RayData's (rayNormalsImageDesc, rayOccupancyBytes).
+    if (bounceRays)
         items.push_back({"voxel bounce rays' light (per slot)", "R32G32_UINT", uint64_t(slots) * sh::BOUNCE_RAYS_SLOT_BYTES});
-        items.push_back({"voxel bounce rays' normals (per slot)", "R32_UINT",
-                         uint64_t(slots) * sh::BOUNCE_RAY_NORMAL_SLOT_BYTES});
-        items.push_back({"voxel bounce rays' occupancy bits", "uint32 buffer", rayOccupancyBytes(n)});
+    if (bounceRays || gatherRays) {
+        items.push_back({"voxel rays' normals (per slot)", "R32_UINT", uint64_t(slots) * sh::BOUNCE_RAY_NORMAL_SLOT_BYTES});
+        items.push_back({"voxel rays' occupancy bits", "uint32 buffer", rayOccupancyBytes(n)});
     }
     return items;
 }
 
-double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots, bool bounceRays) {
+double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots, bool bounceRays, bool gatherRays) {
     uint64_t total = 0;
-    for (const VolumeMemory& m : volumeMemory(n, slots, bounceRays)) total += m.bytes;
+    for (const VolumeMemory& m : volumeMemory(n, slots, bounceRays, gatherRays)) total += m.bytes;
     return double(total) / (double(n) * n * n);
 }
 

@@ -72,10 +72,11 @@ struct VolumeMemory {
     uint64_t bytes;
 };
 // What the volumes of an N^3 grid with `slots` slots take, before allocating anything.
-// bounceRays: with the bounce's per-slot ray results (--bounce-trace rays).
-std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRays = false);
+// bounceRays: with the bounce's per-slot ray results (--bounce-trace rays);
+// bounceRays or gatherRays (--gather-trace rays): with what rays read (vxgi::RayData).
+std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRays = false, bool gatherRays = false);
 // Their sum over N^3: the figure issue #14's compact-storage goal is stated in.
-double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots, bool bounceRays = false);
+double voxelBytesPerGridVoxel(uint32_t n, uint32_t slots, bool bounceRays = false, bool gatherRays = false);
 
 // A grid's dense volumes, in window coordinates: the radiance and the
 // directional volumes filtered from it. Clipmap levels 1.. share one set
@@ -117,7 +118,9 @@ public:
     // The occupied-voxel list (shared/voxel_list_pass.h): header, then one
     // packed coordinate per slot. Storage, indirect-dispatch arguments, fills.
     gpu::Buffer list;
-    double bytesPerGridVoxel(bool bounceRays = false) const { return voxelBytesPerGridVoxel(grid.n, slots, bounceRays); }
+    double bytesPerGridVoxel(bool bounceRays = false, bool gatherRays = false) const {
+        return voxelBytesPerGridVoxel(grid.n, slots, bounceRays, gatherRays);
+    }
     const std::shared_ptr<DenseVolumes>& dense() const { return dense_; }
     bool sharesDense() const { return dense_.use_count() > 1; }
     // What this grid alone holds: everything but shared dense volumes.

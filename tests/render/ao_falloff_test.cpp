@@ -50,6 +50,7 @@ render::RenderSettings settings(float lambda) {
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
     rs.gather.aoLambda = lambda;
+    rs.gather.trace = render::GatherTrace::Cones;  // the cones' start and steps are what the falloff checks
     return rs;
 }
 

@@ -42,6 +42,7 @@ render::RenderSettings settings(int fixedTurn) {
     rs.voxelLight.bounces = 0;
     rs.emitterLights = false;  // the wall's emission in the voxels, gathered by the cones
     rs.gather.traceScale = 1.0f;
+    rs.gather.trace = render::GatherTrace::Cones;  // the cones are what turns
     rs.cones.coneSet = sh::CONE_SET_6;
     rs.gather.spin = true;
     rs.gather.fixedTurn = fixedTurn;

@@ -42,6 +42,9 @@ render::RenderSettings settings(float traceScale) {
     rs.voxelLight.bounces = 0;
     rs.emitterLights = false;  // the ceiling's radiance is what the cones gather
     rs.gather.traceScale = traceScale;
+    // The cones: a pixel's trace is the same computation at either size (the
+    // rays' seeds follow the trace pixel, so their noise would differ).
+    rs.gather.trace = render::GatherTrace::Cones;
     return rs;
 }
 

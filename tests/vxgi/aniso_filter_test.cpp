@@ -224,7 +224,7 @@ TEST_F(AnisoFilter, TravelDirectionDecidesWhichChildIsInFront) {
 // voxel layers, its dark face's voxel at x = 0 (normal -x) and its lit face's
 // at x = 1 (normal +x), each alone in its column along y and z, and a tilted
 // voxel at x = 2 whose normal is half way through the fade for rays
-// travelling +x (shader::ANISO_BACK_FADE_*).
+// travelling +x (shader::VOXEL_BACK_FADE_*).
 TEST_F(AnisoFilter, AVoxelSeenFromBehindBlocksButShowsNoLight) {
     constexpr uint32_t kN = 16;
     const vxgi::VoxelVolumes volumes = volumesFor(kN);
@@ -232,7 +232,7 @@ TEST_F(AnisoFilter, AVoxelSeenFromBehindBlocksButShowsNoLight) {
     radiance.at(0, 0, 0) = glm::vec4(0.125f, 0.0f, 0.0f, 1.0f);
     radiance.at(1, 0, 0) = glm::vec4(0.0f, 1.0f, 0.0f, 1.0f);
     radiance.at(2, 0, 0) = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);
-    const float half = 0.5f * (shader::ANISO_BACK_FADE_START + shader::ANISO_BACK_FADE_END);
+    const float half = 0.5f * (shader::VOXEL_BACK_FADE_START + shader::VOXEL_BACK_FADE_END);
     const glm::vec3 tilted(half, std::sqrt(1.0f - half * half), 0.0f);
     filter(volumes, radiance, {{{0, 0, 0}, {-1, 0, 0}}, {{1, 0, 0}, {1, 0, 0}}, {{2, 0, 0}, tilted}});
     auto level0 = [&](int dir, int cell) { return readDirectional(volumes, uint32_t(dir), 0).at(cell, 0, 0); };

@@ -456,7 +456,7 @@ TEST_F(InjectDirect, TwoSidedVoxelsAreLitPerSide) {
 // none from behind.
 double seenFront(const dvec3& n, int dir) {
     const double along = kSign[dir] * n[kAxis[dir]];
-    return std::clamp((sh::ANISO_BACK_FADE_END - along) / (sh::ANISO_BACK_FADE_END - sh::ANISO_BACK_FADE_START), 0.0,
+    return std::clamp((sh::VOXEL_BACK_FADE_END - along) / (sh::VOXEL_BACK_FADE_END - sh::VOXEL_BACK_FADE_START), 0.0,
                       1.0);
 }
 

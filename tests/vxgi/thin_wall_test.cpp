@@ -216,16 +216,28 @@ Bands groundBands(const scene::Scene& s, const render::RenderSettings& rs, const
     return b;
 }
 
+void checkRoomFloorBands(const scene::Scene& s, const render::RenderSettings& rs, uint32_t n, bool rays);
+
 // The room above, seen from inside: the floor, away from the probe's shadow.
 // Inside, everything is leaked light; the band within a voxel of the walls
-// must not be brighter than the floor two to five voxels in.
+// must not be brighter than the floor two to five voxels in. The gather's
+// cones let some through; its rays (the default) none.
 TEST_F(ThinWallPixels, RoomFloorShowsNoGlowAlongTheWalls) {
     constexpr uint32_t n = 64;
     scene::Scene s = thinWallRoom(n);
     s.cameras.clear();
     for (scene::Node& node : s.nodes) node.camera = -1;
     addTopDownCamera(s, 0.3f, glm::radians(110.0f));  // inside, looking down at the floor
-    const render::RenderSettings rs = pixelSettings(n, 3);
+    for (render::GatherTrace trace : {render::GatherTrace::Cones, render::GatherTrace::Rays}) {
+        const bool rays = trace == render::GatherTrace::Rays;
+        SCOPED_TRACE(rays ? "rays" : "cones");
+        render::RenderSettings rs = pixelSettings(n, 3);
+        rs.gather.trace = trace;
+        checkRoomFloorBands(s, rs, n, rays);
+    }
+}
+
+void checkRoomFloorBands(const scene::Scene& s, const render::RenderSettings& rs, uint32_t n, bool rays) {
     const image::ImageRGBA32F img = render(s, rs);
     const float v = 2.0f / float(n);
     Bands b;
@@ -237,9 +249,14 @@ TEST_F(ThinWallPixels, RoomFloorShowsNoGlowAlongTheWalls) {
             addBand(b, img, x, y, (kInner - std::max(std::abs(p.x), std::abs(p.z))) / v);
         }
     const double band = b.mean(0, 0), inner = b.mean(2, 5);
-    std::printf("  floor inside, E/pi: within a voxel of the walls %.5f, 2-5 voxels in %.5f (ratio %.2f; "
+    std::printf("  %s: floor inside, E/pi: within a voxel of the walls %.5f, 2-5 voxels in %.5f (ratio %.2f; "
                 "1.50 before)\n",
-                band, inner, band / inner);
+                rays ? "rays" : "cones", band, inner, band / inner);
+    if (rays) {
+        EXPECT_EQ(inner, 0.0);  // the voxel bounce's rays and the gather's let nothing through the walls
+        EXPECT_EQ(band, 0.0);
+        return;
+    }
     ASSERT_GT(inner, 0.0);
     EXPECT_LT(band / inner, 1.0);  // not brighter (measured 0.31: the walls' inner sides are dark)
 }

@@ -1,0 +1,84 @@
+// The per-pixel gather by rays (--gather-trace rays, gather.comp's RAYS and
+// lib/voxel_rays.glsl's pixelRaysCosine) against the same rays marched on the
+// CPU: an open box of emissive walls (32^3) seen from above, its radiance
+// read back after the frame, and for every floor pixel the rays the shader
+// casts (the same directions from the pixel's seed, the same start off the
+// floor, the same rules for the floor's own voxels) walked cell by cell
+// through that radiance. The irradiance term is E / pi, their mean.
+#include <cmath>
+#include <cstdio>
+
+#include "gpu_fixture.h"
+#include "light_helpers.h"
+#include "ray_march.h"
+#include "render/gather.h"
+#include "shared/bounce_pass.h"
+#include "shared/composite_pass.h"
+#include "vox_helper.h"
+
+namespace dvsgi::test {
+namespace {
+
+constexpr uint32_t kN = 32;
+constexpr float kHalf = 0.71875f;  // walls in the middle of voxel layers 4 and 27 of [-1, 1]^3
+constexpr uint32_t kRays = 16;
+constexpr float kOffset = 1.0f;  // voxels
+
+class GatherRays : public GpuTest {};
+
+TEST_F(GatherRays, MatchTheSameRaysMarchedOnTheCpu) {
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), kHalf, true);
+    addTopDownCamera(s, 0.6f, glm::radians(70.0f));
+    render::RenderSettings rs = unitBoxGridSettings(kN, 256);
+    rs.width = rs.height = 48;
+    rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 0;  // the walls' emission is all the voxels hold
+    rs.gather.trace = render::GatherTrace::Rays;
+    rs.gather.rays = kRays;
+    rs.gather.rayOffsetVoxels = kOffset;
+    rs.gather.traceScale = 1.0f;  // trace pixel = image pixel, whose seed the CPU repeats
+    rs.gather.spin = false;       // each pixel's own rays, not resolved with its neighbours'
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    const image::ImageRGBA32F img = r.readOutput();
+    const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
+    const VoxelReadback attributes = readVoxels(*r.volumes());
+    const float voxel = 2.0f / float(kN);
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
+
+    double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
+    int count = 0;
+    for (uint32_t y = 0; y < rs.height; ++y)
+        for (uint32_t x = 0; x < rs.width; ++x) {
+            const glm::vec3 world = pixelOnPlane(s, rs, x, y, -kHalf);
+            // The floor up to the walls, whose voxels the rays of the pixels
+            // beside them start in (the pixel's rule for such a start).
+            if (std::fabs(world.x) > kHalf - 0.1f * voxel || std::fabs(world.z) > kHalf - 0.1f * voxel) continue;
+            const glm::vec3 p = (world + 1.0f) / voxel;
+            const auto own = [&](glm::ivec3 c) {
+                return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
+            };
+            const uint32_t seed = shader::rayHash(x | y << 16u);
+            double cpu = 0.0;
+            for (uint32_t i = 0; i < kRays; ++i)
+                cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel).r;
+            cpu /= kRays;
+            const double gpu = img.at(x, y)[0];
+            sumGpu += gpu;
+            sumCpu += cpu;
+            worst = std::max(worst, std::fabs(gpu - cpu));
+            ++count;
+        }
+    std::printf("  %d floor pixels: E/pi GPU %.5f, CPU %.5f (%+.3f%%); worst pixel off by %.4f\n", count,
+                sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
+    ASSERT_GT(count, 500);
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.003);
+    // One ray of 16 meeting a wall on one side and not on the other would be 1/16.
+    EXPECT_LT(worst, 0.5 / kRays);
+}
+
+}  // namespace
+}  // namespace dvsgi::test

@@ -1,0 +1,101 @@
+// A CPU model of the rays of shaders/lib/voxel_rays.glsl (the voxel bounce's
+// and the per-pixel gather's): a ray walks the grid cell by cell and takes the
+// radiance of the first occupied voxel that is not on the surface it leaves
+// and that it does not pass in front of.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/glm.hpp>
+
+#include "light_helpers.h"
+#include "shared/bounce_pass.h"
+#include "shared/voxel_data.h"
+#include "vox_helper.h"
+
+namespace dvsgi::test {
+
+// voxelNormal of the voxel at c from the read-back attribute sums, packed as
+// the rays read it (BIND_BOUNCE_RAY_NORMALS: each axis in steps of 1/RAY_NORMAL_SCALE).
+inline glm::vec3 rayNormalOf(const VoxelReadback& attributes, glm::ivec3 c) {
+    glm::vec3 n(0.0f);
+    for (int a = 0; a < 3; ++a)
+        n[a] = std::sqrt(attributes.at(c.x, c.y, c.z, shader::CH_NORMAL_POS_X + 2 * a)) -
+               std::sqrt(attributes.at(c.x, c.y, c.z, shader::CH_NORMAL_NEG_X + 2 * a));
+    const float len = glm::length(n);
+    if (len <= 1e-6f) return glm::vec3(0.0f);
+    const float scale = shader::RAY_NORMAL_SCALE;
+    return glm::floor(glm::clamp(n / len, -1.0f, 1.0f) * scale + 0.5f) / scale;
+}
+
+// passesInFront: the ray p + d t, inside voxel c, leaves it (at tExit) before
+// the plane through c's centre across c's normal nc.
+inline bool rayPassesInFront(glm::ivec3 c, glm::vec3 nc, glm::vec3 p, glm::vec3 d, float t, float tExit) {
+    const glm::vec3 m = glm::abs(nc);
+    if (std::max({m.x, m.y, m.z}) < 0.98f) return false;  // edges, corners, tilted surfaces: solid
+    const float ahead = glm::dot(glm::vec3(c) + 0.5f - (p + d * t), nc), along = glm::dot(d, nc);
+    if (ahead * along <= 0.0f) return false;
+    return t + ahead / along > tExit;
+}
+
+// Where a ray starts: a voxel's rays that start inside another surface's voxel
+// meet its back (no light); a pixel's pass that voxel when they start in front
+// of its plane and move away from it, and otherwise meet it.
+enum class RayStart { Voxel, Pixel };
+
+// What a ray from p along d (voxel units) meets in `radiance`: `own(c)` says
+// whether occupied voxel c is on the surface the ray leaves, `normalAt(c)`
+// gives c's normal as the rays read it. Black where it leaves the grid. With
+// `backsDark` a one-sided voxel met from behind shows part of its light or none
+// (seenFromFront in lib/voxel_sides.glsl).
+template <typename Own, typename NormalAt>
+glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&& own, NormalAt&& normalAt,
+                   RayStart start, bool backsDark = true) {
+    const int n = int(radiance.n);
+    glm::ivec3 c = glm::ivec3(glm::floor(p));
+    glm::ivec3 step(0);
+    glm::vec3 tMax(1e30f), tDelta(1e30f);
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0.0f) continue;
+        step[a] = d[a] > 0.0f ? 1 : -1;
+        tDelta[a] = 1.0f / std::fabs(d[a]);
+        tMax[a] = ((d[a] > 0.0f ? float(c[a] + 1) : float(c[a])) - p[a]) / d[a];
+    }
+    float t = 0.0f;  // where the ray entered cell c
+    for (bool first = true;; first = false) {
+        for (int a = 0; a < 3; ++a)
+            if (c[a] < 0 || c[a] >= n) return glm::vec3(0.0f);
+        const glm::vec4 r = radiance.at(c.x, c.y, c.z);
+        const int a = tMax.x <= tMax.y && tMax.x <= tMax.z ? 0 : (tMax.y <= tMax.z ? 1 : 2);
+        if (r.a > 0.0f && !own(c)) {
+            const glm::vec3 nc = normalAt(c);
+            if (first && start == RayStart::Voxel) return glm::vec3(0.0f);
+            const bool leaves = first && glm::dot(p - (glm::vec3(c) + 0.5f), nc) > 0.0f && glm::dot(d, nc) >= 0.0f;
+            if (!leaves && !rayPassesInFront(c, nc, p, d, t, tMax[a])) {
+                if (!backsDark || r.a < 1.0f) return glm::vec3(r);  // two-sided voxels (r.a < 1): not modelled here
+                const float fade = (shader::VOXEL_BACK_FADE_END - glm::dot(nc, d)) /
+                                   (shader::VOXEL_BACK_FADE_END - shader::VOXEL_BACK_FADE_START);
+                return glm::vec3(r) * std::clamp(fade, 0.0f, 1.0f);
+            }
+        }
+        t = tMax[a];
+        c[a] += step[a];
+        tMax[a] += tDelta[a];
+    }
+}
+
+// The i-th of a set of rays cosine-distributed about n (frame t, b), the R2
+// sequence shifted by `seed`, as voxelRaysCosine and pixelRaysCosine cast them.
+inline glm::vec3 cosineRay(glm::vec3 n, uint32_t seed, uint32_t i) {
+    const glm::vec3 t = glm::normalize(std::fabs(n.x) < 0.9f ? glm::cross(n, glm::vec3(1, 0, 0))
+                                                             : glm::cross(n, glm::vec3(0, 1, 0)));
+    const glm::vec3 b = glm::cross(n, t);
+    const glm::vec2 shift(float(seed & 0xffffu) / 65536.0f, float(seed >> 16) / 65536.0f);
+    const glm::vec2 u = glm::fract(shift + float(i) * glm::vec2(shader::RAY_R2_U, shader::RAY_R2_V));
+    const float rad = std::sqrt(u.x), phi = 6.28318530717959f * u.y;
+    return glm::normalize(t * (rad * std::cos(phi)) + b * (rad * std::sin(phi)) +
+                          n * std::sqrt(std::max(1.0f - u.x, 0.0f)));
+}
+
+}  // namespace dvsgi::test
