@@ -49,9 +49,11 @@ enum class RayStart { Voxel, Pixel };
 // gives c's normal as the rays read it. Black where it leaves the grid. With
 // `backsDark` a one-sided voxel met from behind shows part of its light or none
 // (seenFromFront in lib/voxel_sides.glsl).
+// `tHit` (optional) receives where the ray entered the voxel it stopped at
+// (infinity where it left the grid), as ambient occlusion weighs it.
 template <typename Own, typename NormalAt>
 glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&& own, NormalAt&& normalAt,
-                   RayStart start, bool backsDark = true) {
+                   RayStart start, bool backsDark = true, float* tHit = nullptr) {
     const int n = int(radiance.n);
     glm::ivec3 c = glm::ivec3(glm::floor(p));
     glm::ivec3 step(0);
@@ -63,6 +65,7 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
         tMax[a] = ((d[a] > 0.0f ? float(c[a] + 1) : float(c[a])) - p[a]) / d[a];
     }
     float t = 0.0f;  // where the ray entered cell c
+    if (tHit) *tHit = INFINITY;
     for (bool first = true;; first = false) {
         for (int a = 0; a < 3; ++a)
             if (c[a] < 0 || c[a] >= n) return glm::vec3(0.0f);
@@ -70,9 +73,12 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
         const int a = tMax.x <= tMax.y && tMax.x <= tMax.z ? 0 : (tMax.y <= tMax.z ? 1 : 2);
         if (r.a > 0.0f && !own(c)) {
             const glm::vec3 nc = normalAt(c);
+            if (tHit) *tHit = t;
             if (first && start == RayStart::Voxel) return glm::vec3(0.0f);
             const bool leaves = first && glm::dot(p - (glm::vec3(c) + 0.5f), nc) > 0.0f && glm::dot(d, nc) >= 0.0f;
-            if (!leaves && !rayPassesInFront(c, nc, p, d, t, tMax[a])) {
+            if (leaves || rayPassesInFront(c, nc, p, d, t, tMax[a])) {
+                if (tHit) *tHit = INFINITY;
+            } else {
                 if (!backsDark || r.a < 1.0f) return glm::vec3(r);  // two-sided voxels (r.a < 1): not modelled here
                 const float fade = (shader::VOXEL_BACK_FADE_END - glm::dot(nc, d)) /
                                    (shader::VOXEL_BACK_FADE_END - shader::VOXEL_BACK_FADE_START);
