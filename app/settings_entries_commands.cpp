@@ -116,7 +116,9 @@ std::vector<Setting> conesAndCommands() {
         with(toggle({"cone-spin", kCones, "on|off", "",
                      "turn the six diffuse cones about the normal by a quarter of 72 degrees more in each pixel of "
                      "a 2x2 block and resolve the turns with a depth- and normal-aware 3x3 tent, so that "
-                     "neighbours sample 24 directions together (off: the paper's fixed set; no effect with --cones 16)",
+                     "neighbours sample 24 directions together (off: the paper's fixed set; no effect with --cones 16); "
+                     "with --gather-trace rays, the same tent averages neighbouring pixels' rays (off: each "
+                     "pixel's own)",
                      kAll, kFrame},
                     FIELD(settings.gather.spin)),
              "off"),

@@ -71,7 +71,7 @@ static_assert(3 * sh::RAY_NORMAL_BITS <= 32 && sh::RAY_NORMAL_SCALE < float(1u <
               "a packed ray normal's three axes fit one word");
 
 gpu::ImageDesc rayNormalsImageDesc(uint32_t slots) {
-    return slotImageDesc(slots, VK_FORMAT_R32_UINT, "voxel bounce rays' normals");
+    return slotImageDesc(slots, VK_FORMAT_R32_UINT, "voxel rays' normals");
 }
 
 VkDeviceSize rayOccupancyBytes(uint32_t n) {
