@@ -96,9 +96,9 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
 // Empty space is crossed a whole cell at a time, sixteen voxels, eight, four
 // or two, wherever the occupancy bits show the cell empty (`offsets`: each
 // level's rayOccupancyOffset). With `backsDark` a one-sided voxel met from
-// behind shows the ray no light (seenFromFront, as the filter shows the cones). A ray that starts inside another surface's
-// voxel meets that surface's back at no distance: no light (a floor under a
-// box standing on it). Taking that voxel's radiance instead made two
+// behind shows the ray no light (seenFromFront, as the filter shows the
+// cones). A ray that starts inside another surface's voxel meets that
+// surface's back at no distance: no light (a floor under a box standing on it). Taking that voxel's radiance instead made two
 // surfaces a voxel apart light each other without loss: with albedo 1 (the
 // Cornell box's white) the light between them never converged.
 bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, int N, uvec4 offsets,
