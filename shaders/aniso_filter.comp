@@ -58,7 +58,7 @@ layout(set = 0, binding = BIND_ANISO_ACCUM, r32f) uniform readonly image3D accum
 // every way).
 float seenFront(vec3 n, uint dir) {
     float along = (dir % 2u == 0u ? -1.0 : 1.0) * n[dir / 2u];  // dot(n, travel direction)
-    return clamp((VOXEL_BACK_FADE_END - along) / (VOXEL_BACK_FADE_END - VOXEL_BACK_FADE_START), 0.0, 1.0);
+    return voxelBackFade(along);
 }
 
 // The mean normal of the voxel in `slot` (slot + 1; 0: empty, normal 0), and

@@ -63,9 +63,7 @@ vec3 unpackRgb9e5(uint v) {
 // along unit t sees (VOXEL_BACK_FADE_*): all of it face on or edge on, none
 // from behind, where what lies beyond a surface is the solid it bounds or its
 // own other face (then a voxel of its own, or this one two-sided).
-float seenFromFront(vec3 n, vec3 t) {
-    return clamp((VOXEL_BACK_FADE_END - dot(n, t)) / (VOXEL_BACK_FADE_END - VOXEL_BACK_FADE_START), 0.0, 1.0);
-}
+float seenFromFront(vec3 n, vec3 t) { return voxelBackFade(dot(n, t)); }
 
 // Side 0 (+axis) or 1 (-axis) of a slot's side-light texel `t`: its direct
 // plus reflected light.

@@ -61,6 +61,11 @@ DVSGI_CONST(float, TWO_SIDED_OPACITY_STEP, 0.00048828125);
 // VOXEL_BACK_FADE_END (seen from behind); lib/voxel_sides.glsl, seenFromFront.
 DVSGI_CONST(float, VOXEL_BACK_FADE_START, 0.1);
 DVSGI_CONST(float, VOXEL_BACK_FADE_END, 0.35);
+// The share of its light a one-sided voxel shows a ray, from along = dot(n, t).
+DVSGI_FUNCTION float voxelBackFade(float along) {
+    float f = (VOXEL_BACK_FADE_END - along) / (VOXEL_BACK_FADE_END - VOXEL_BACK_FADE_START);
+    return f < 0.0f ? 0.0f : (f > 1.0f ? 1.0f : f);
+}
 
 // Slots per row of the per-slot images (attributes, voxel direct light);
 // capacities are whole rows.

@@ -246,6 +246,7 @@ void Renderer::updateFrameConstants() {
 // bounces of Fixed/Converge; a Feedback frame records its one bounce here.
 void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
+    rayDataCurrent_ = false;
     if (pv_) {
         recordProgressiveVoxels(cmd);
     } else if (!clip_.empty()) {
@@ -293,6 +294,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
 
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
+    rayDataCurrent_ = false;
     staticLightKept_ = false;
     for (size_t l = 0; l < clip_.size(); ++l) recordClipmapStatic(cmd, l, clip_[l].windowMin);
     if (!clip_.empty()) return;
@@ -344,10 +346,12 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
                              trace ? &*trace : nullptr, patchCount_ > 0};
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
-        // The gather's rays read this frame's voxels' normals and occupancy,
-        // recorded again: the bounce's (if any ran) may be from a bounce
-        // before this frame's voxels changed, or not recorded at all.
-        if (gatherRays()) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
+        // The gather's rays read this frame's voxels' normals and occupancy:
+        // packed by a ray bounce since the voxels changed, or here.
+        if (gatherRays() && !rayDataCurrent_) {
+            bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
+            rayDataCurrent_ = true;
+        }
         const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr,
                               gatherRays() ? rayData_.get() : nullptr, settings_.voxelLight.backsDark};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,
@@ -510,6 +514,7 @@ bool Renderer::growVoxelSlots() {
     if (!grown) return false;
     bounceStats_.reset();
     staticDirty_ = true;
+    rayDataCurrent_ = false;
     haveHistory_ = false;
     dropVoxelHistory();
     return true;
