@@ -260,8 +260,8 @@ std::vector<Setting> imageAndVoxels() {
                      1, 8, FIELD(settings.clipmap.levels), false, true),
              "4"),
         with(number({"clipmap-voxel", kVoxels, "S", "m",
-                     "--clipmap: the voxel edge of the finest level; 0 = the coarsest level spans twice the scene's "
-                     "longest side",
+                     "--clipmap: the voxel edge of the finest level; 0 = the coarsest level holds the whole scene "
+                     "from the starting camera (twice the scene's longest side from inside it)",
                      kAll, kNew},
                     0.0, 1000.0, FIELD(settings.clipmap.voxelSize)),
              "0.05", "a length in 0..1000 m"),

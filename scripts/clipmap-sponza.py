@@ -2,7 +2,7 @@
 """Sponza's indirect term with a camera-following clipmap against fitted grids.
 
 Renders the indirect term of sponza-sun from its own camera with fitted grids
-of 64^3 and 128^3 and with --clipmap 3 of 64^3 (level 0's voxels are half the
+of 64^3 (rays, the default, and cones) and 128^3 and with --clipmap 3 of 64^3 (level 0's voxels are half the
 fitted 64^3's, the coarsest level spans twice the scene), compares each with
 the fitted 128^3 (../shared/tools/compare.py) and prints a markdown table with
 each run's GPU time and voxel memory (from --metrics). docs/clipmap.md shows
@@ -25,6 +25,9 @@ common = ["--width", "320", "--height", "180", "--output", "indirect", "--quiet"
 runs = [
     ("fitted 128^3", "fit128", ["--voxels", "128"]),
     ("fitted 64^3", "fit64", ["--voxels", "64"]),
+    # A clipmap traces cones (bounce and gather): the fitted 64^3 grid again
+    # with cones, like for like.
+    ("fitted 64^3, cones", "fit64cones", ["--voxels", "64", "--bounce-trace", "cones", "--gather-trace", "cones"]),
     ("clipmap 3 x 64^3", "clip3x64", ["--voxels", "64", "--clipmap", "3"]),
 ]
 

@@ -28,6 +28,7 @@ layout(local_size_x = VOXEL_LIST_GROUP) in;
 layout(set = 0, binding = BIND_BOUNCE_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_CONE_GRID) uniform Levels { ConeLevels clip; };
 layout(set = 0, binding = BIND_CONE_DIRECTIONAL) uniform sampler3D directionalAtlas;
+layout(set = 0, binding = BIND_BOUNCE_LEVELS_BEFORE) uniform sampler3D levelsBefore;
 #define CONE_FIRST_LEVEL int(pc.flags.y)
 #else
 layout(set = 0, binding = BIND_CONE_GRID) uniform Grid { VoxelGrid grid; };
@@ -229,7 +230,12 @@ void main() {
         if (pc.flags.x != 0u && sideChange.x >= 0.0) {
             change = sideChange;
         } else if (pc.flags.x != 0u && r.a > 0.0) {
-            float before = luminance(imageLoad(outRadiance, v).rgb), after = luminance(r.rgb);
+#ifdef DVSGI_CLIPMAP
+            vec3 old = texelFetch(levelsBefore, ivec3(v.xy, CONE_FIRST_LEVEL * int(grid.dims.x) + v.z), 0).rgb;
+#else
+            vec3 old = imageLoad(outRadiance, v).rgb;
+#endif
+            float before = luminance(old), after = luminance(r.rgb);
             change = vec2(abs(after - before), after);
         }
         imageStore(outRadiance, v, r);

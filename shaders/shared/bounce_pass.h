@@ -92,6 +92,11 @@ DVSGI_FUNCTION uint rayHash(uint x) {
 // Grid voxel v's shift (low 16 bits: u, high: v, in 1/65536).
 DVSGI_FUNCTION uint raySeed(ivec3 v) { return rayHash(uint(v.x) | uint(v.y) << 10u | uint(v.z) << 20u); }
 
+// Clipmap: the levels' radiance atlas (vxgi/clipmap.h) as the last filtering
+// left it, read for the change statistics: levels 1.. share one scratch
+// radiance volume, cleared before each level's bounce, so it holds no "before".
+DVSGI_CONST(uint, BIND_BOUNCE_LEVELS_BEFORE, 15);
+
 DVSGI_END
 
 #endif

@@ -413,11 +413,12 @@ FrameStats Renderer::renderFrame() {
     const bool feedback = voxelizer_ && feedbackFrame();
     const bool converge = voxelizer_ && !feedback && vl.bounceMode == vxgi::BounceMode::Converge;
     const uint32_t fixed = voxelizer_ && vl.bounceMode == vxgi::BounceMode::Fixed ? vl.bounces : 0;
-    if (converge && !bounceStats_)
-        bounceStats_ = std::make_unique<gpu::Buffer>(
-            ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(volumes_->slots),
-            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-            gpu::MemoryUse::Readback, "bounce statistics");
+    if (converge && bounceStats_.empty())
+        for (const vxgi::VoxelVolumes* v : levelVolumes())
+            bounceStats_.push_back(std::make_unique<gpu::Buffer>(
+                ctx_, sizeof(float) * vxgi::BouncePass::statsFloats(v->slots),
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::Readback,
+                "bounce statistics"));
     // Converging takes one submission per bounce (the host reads each one's
     // change); everything else is one command buffer.
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -512,7 +513,7 @@ bool Renderer::growVoxelSlots() {
         grown = true;
     }
     if (!grown) return false;
-    bounceStats_.reset();
+    bounceStats_.clear();
     staticDirty_ = true;
     rayDataCurrent_ = false;
     haveHistory_ = false;

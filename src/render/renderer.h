@@ -303,7 +303,9 @@ private:
     std::vector<gpu::Image> voxelHistory_;
     uint32_t historyTag_ = 0, lastHistoryTag_ = 0, historyHold_ = 0;
     std::unique_ptr<gpu::Buffer> listHeader_;  // host-visible copy of the list header after voxelization
-    std::unique_ptr<gpu::Buffer> bounceStats_;  // host-visible, BouncePass::statsFloats(slots) floats
+    // Host-visible, BouncePass::statsFloats(slots) floats per level: a
+    // clipmap's change counts every level (level 0 may hold nothing).
+    std::vector<std::unique_ptr<gpu::Buffer>> bounceStats_;
     std::unique_ptr<gpu::GpuTimers> timers_;
 
 public:

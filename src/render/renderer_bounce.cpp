@@ -26,13 +26,12 @@ std::optional<vxgi::ClipTrace> Renderer::bounceTrace() const {
 void Renderer::recordBounce(VkCommandBuffer cmd, bool withStats) {
     const std::optional<vxgi::ClipTrace> trace = bounceTrace();
     recordLevels(cmd, "voxel filtering (bounce)", [&](size_t l, const vxgi::VoxelVolumes& v) {
-        recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, withStats && l == 0);
+        recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, withStats);
     });
 }
 
 // A level's bounce. With --clipmap its voxels trace from their level up,
-// through the windows the directional volumes were filtered in; statistics:
-// level 0's.
+// through the windows the directional volumes were filtered in.
 void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::VoxelVolumes& v,
                                  const vxgi::ClipTrace* trace, bool withStats, bool blend) {
     const vxgi::ConeSettings cone = vxgi::bounceCones(settings_.cones, settings_.voxelLight.bounceStepFactor);
@@ -46,7 +45,7 @@ void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::Voxe
     const vxgi::VoxelLightSettings& vl = settings_.voxelLight;
     const uint32_t rays = bounceRays() ? vl.bounceRays : 0u;
     bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, rays, rayData_.get(), vl.backsDark,
-                    withStats ? bounceStats_.get() : nullptr, timers_.get(), trace, uint32_t(l),
+                    withStats ? bounceStats_.at(l).get() : nullptr, timers_.get(), trace, uint32_t(l),
                     blend ? &history : nullptr);
     if (rays > 0) rayDataCurrent_ = true;  // the ray bounce packed this frame's voxels into rayData_
 }
@@ -62,12 +61,15 @@ bool Renderer::feedbackFrame() const {
 }
 
 double Renderer::bounceChange() const {
-    const float* f = static_cast<const float*>(bounceStats_->mapped());
     double change = 0.0, total = 0.0;
-    const uint32_t count = vxgi::BouncePass::statsFloats(volumes_->slots);
-    for (uint32_t i = 0; i + 1 < count; i += sh::BOUNCE_STATS_FLOATS) {
-        change += f[i];
-        total += f[i + 1];
+    const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
+    for (size_t l = 0; l < bounceStats_.size(); ++l) {
+        const float* f = static_cast<const float*>(bounceStats_[l]->mapped());
+        const uint32_t count = vxgi::BouncePass::statsFloats(levels[l]->slots);
+        for (uint32_t i = 0; i + 1 < count; i += sh::BOUNCE_STATS_FLOATS) {
+            change += f[i];
+            total += f[i + 1];
+        }
     }
     return total > 0.0 ? change / total : 0.0;
 }

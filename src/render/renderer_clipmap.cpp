@@ -52,11 +52,12 @@ std::vector<const vxgi::VoxelVolumes*> Renderer::levelVolumes() const {
 }
 
 // Level 0's voxel edge: --clipmap-voxel, or the size that lets the coarsest
-// level's window hold the whole scene.
+// level's window hold the whole scene from the starting camera.
 float Renderer::clipBaseVoxel() const {
     const RenderSettings& s = settings_;
-    return s.clipmap.voxelSize > 0.0f ? s.clipmap.voxelSize
-                                      : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, s.voxels, s.clipmap.levels);
+    return s.clipmap.voxelSize > 0.0f
+               ? s.clipmap.voxelSize
+               : vxgi::clipBaseVoxelSize(sceneGpu_->bounds, s.voxels, s.clipmap.levels, glm::vec3(camera_.world[3]));
 }
 
 // Called by the constructor once volumes_ (level 0) exists; the levels start
@@ -71,6 +72,12 @@ void Renderer::createClipmap() {
     if (s.hasVoxelBox) throw std::runtime_error("clipmap: not with --voxel-box (the levels follow the camera)");
     const float base = clipBaseVoxel();
     clipLattice_ = vxgi::clipLattice(sceneGpu_->bounds, base);
+    // Geometry outside every window gets no voxel light and casts no voxel
+    // shadow: say so rather than render a silently different image.
+    if (!vxgi::clipCoarsestHolds(sceneGpu_->bounds, glm::vec3(camera_.world[3]), clipLattice_, base, s.voxels, levels))
+        warnings_.push_back("--clipmap " + std::to_string(levels) + " with --clipmap-voxel " + std::to_string(base) +
+                            ": the coarsest level's window around the camera leaves part of the scene out "
+                            "(no indirect light from it); use more levels or a larger voxel, or 0 to fit the scene");
     clip_.resize(levels);
     for (uint32_t l = 0; l < levels; ++l) {
         const float size = base * float(1u << l);

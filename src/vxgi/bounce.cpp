@@ -103,6 +103,7 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     rayShadePipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceTraced), rays, "voxel bounce (rays' light)");
     if (clipmap) {
         layout.bindings.push_back({sh::BIND_BOUNCE_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs});
+        layout.bindings.push_back({sh::BIND_BOUNCE_LEVELS_BEFORE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs});
         clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceClipmap), layout, "voxel bounce (clipmap)");
     }
     noStats_ = gpu::Buffer(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, gpu::MemoryUse::Device, "bounce stats (unused)");
@@ -158,6 +159,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     tracker.image(v.sides, gpu::use::ComputeReadWrite);
     tracker.image(v.directional, gpu::use::ComputeRead);
     if (clip) tracker.image(clip->atlases.directional, gpu::use::ComputeRead);
+    if (clip) tracker.image(clip->atlases.radiance, gpu::use::ComputeRead);
     // Read and written: the statistics compare each voxel with its value before.
     tracker.image(v.radiance, gpu::use::ComputeReadWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeRead);
@@ -187,6 +189,8 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         d.uniformBuffer(sh::BIND_CONE_GRID, clip->levels.handle())
             .uniformBuffer(sh::BIND_BOUNCE_GRID, v.gridBuffer.handle())
             .sampledImage(sh::BIND_CONE_DIRECTIONAL, clip->atlases.directional.view(), volumeSampler,
+                          VK_IMAGE_LAYOUT_GENERAL)
+            .sampledImage(sh::BIND_BOUNCE_LEVELS_BEFORE, clip->atlases.radiance.view(), volumeSampler,
                           VK_IMAGE_LAYOUT_GENERAL);
     } else {
         d.uniformBuffer(sh::BIND_CONE_GRID, v.gridBuffer.handle())

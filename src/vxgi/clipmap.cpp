@@ -26,10 +26,28 @@ int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 }  // namespace
 
-float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels) {
+float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels, const glm::vec3& eye) {
     const glm::vec3 size = bounds.valid() ? bounds.max - bounds.min : glm::vec3(2.0f);
-    const float side = std::max({size.x, size.y, size.z, 1e-3f});
-    return 2.0f * side / (float(n) * std::ldexp(1.0f, int(levels) - 1));
+    float half = std::max({size.x, size.y, size.z, 1e-3f});
+    if (bounds.valid()) {
+        // A camera outside the scene (a Cornell box seen from its open side)
+        // needs a window that reaches the far face; the window sits up to a
+        // snap step and a voxel off the camera, so that many coarse voxels
+        // are kept spare.
+        const glm::vec3 reach = glm::max(eye - bounds.min, bounds.max - eye);
+        const float spare = float(clipSpareVoxels(n));
+        half = std::max(half, std::max({reach.x, reach.y, reach.z}) * float(n) / (float(n) - 2.0f * spare));
+    }
+    return 2.0f * half / (float(n) * std::ldexp(1.0f, int(levels) - 1));
+}
+
+bool clipCoarsestHolds(const scene::Bounds& bounds, const glm::vec3& eye, const glm::vec3& lattice, float voxelSize0,
+                       uint32_t n, uint32_t levels) {
+    if (!bounds.valid()) return true;
+    const float size = voxelSize0 * std::ldexp(1.0f, int(levels) - 1);
+    const GridSpec g = clipLevelGrid(clipWindowMin(eye, lattice, size, n), lattice, size, n);
+    const glm::vec3 hi = g.origin + glm::vec3(float(n) * size);
+    return glm::all(glm::greaterThanEqual(bounds.min, g.origin)) && glm::all(glm::lessThanEqual(bounds.max, hi));
 }
 
 glm::vec3 clipLattice(const scene::Bounds& bounds, float voxelSize0) {

@@ -8,6 +8,7 @@
 // coordinates, so every per-voxel pass works on a level as on a fitted grid.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -42,9 +43,18 @@ struct ClipmapSettings {
 // recordAtlasFold filters it.
 inline constexpr int kClipSnapVoxels = 8;
 
+// How far (in voxels of its level) a window may sit off the camera: half a
+// snap step, one voxel for the camera's own, never more than a quarter window.
+inline uint32_t clipSpareVoxels(uint32_t n) { return std::min<uint32_t>(kClipSnapVoxels / 2 + 1, n / 4); }
 // Level 0's voxel edge when none is given: the coarsest level spans twice the
-// scene's longest side, so its window holds the whole scene from anywhere in it.
-float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels);
+// scene's longest side, so its window holds the whole scene from anywhere in it,
+// and more where the camera `eye` stands outside the scene far from its far face
+// (the window then still holds the scene from there, clipSpareVoxels included).
+float clipBaseVoxelSize(const scene::Bounds& bounds, uint32_t n, uint32_t levels, const glm::vec3& eye);
+// Whether the coarsest level's window, placed around `eye`, holds the whole
+// scene (the Renderer warns when a given --clipmap-voxel leaves part out).
+bool clipCoarsestHolds(const scene::Bounds& bounds, const glm::vec3& eye, const glm::vec3& lattice, float voxelSize0,
+                       uint32_t n, uint32_t levels);
 // Where every level's voxels start: the scene's lower bounds at the centres of
 // level 0's voxels (fitGrid puts them kFitLatticeOffset from the centres; a
 // clipmap's voxel is not tied to the bounds' extent, so no plane is drawn to

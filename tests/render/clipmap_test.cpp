@@ -56,7 +56,7 @@ TEST(ClipmapWindow, GridWrapsNegativeCornersIntoTheVolume) {
     b.min = glm::vec3(-10.0f, 0.0f, -2.0f);
     b.max = glm::vec3(10.0f, 3.0f, 2.0f);
     // The coarsest of 3 levels spans twice the longest side: 32 x 4 x s0 = 40 m.
-    EXPECT_FLOAT_EQ(vxgi::clipBaseVoxelSize(b, 32, 3), 40.0f / 128.0f);
+    EXPECT_FLOAT_EQ(vxgi::clipBaseVoxelSize(b, 32, 3, glm::vec3(1.0f, 1.0f, 0.0f)), 40.0f / 128.0f);
     // The lattice puts the lower bounds at voxel centres: -10 = 0.125 + (k + 0.5) 0.25 for whole k.
     const glm::vec3 lattice = vxgi::clipLattice(b, 0.25f);
     for (int a = 0; a < 3; ++a) {
@@ -65,6 +65,40 @@ TEST(ClipmapWindow, GridWrapsNegativeCornersIntoTheVolume) {
         EXPECT_GE(lattice[a], 0.0f);
         EXPECT_LT(lattice[a], 0.25f);
     }
+}
+
+// A camera outside the scene, as a Cornell box's camera in front of its open
+// side: the default coarsest window still holds the whole scene, wherever the
+// snapping puts it; from inside, it is twice the longest side, up to the
+// spare voxels' share where the camera stands near one end.
+TEST(ClipmapWindow, DefaultCoarsestWindowHoldsTheSceneFromOutsideIt) {
+    scene::Bounds b;
+    b.min = glm::vec3(0.0f);
+    b.max = glm::vec3(0.56f, 0.55f, 0.56f);
+    int outside = 0;
+    for (uint32_t n : {32u, 64u, 128u})
+        for (uint32_t levels : {1u, 2u, 3u})
+            for (float z = -2.0f; z <= 0.8f; z += 0.13f)
+                for (float x = -0.4f; x <= 1.0f; x += 0.35f) {
+                    const glm::vec3 eye(x, 0.27f, z);
+                    const float v = vxgi::clipBaseVoxelSize(b, n, levels, eye);
+                    const glm::vec3 lattice = vxgi::clipLattice(b, v);
+                    EXPECT_TRUE(vxgi::clipCoarsestHolds(b, eye, lattice, v, n, levels))
+                        << "N " << n << ", " << levels << " levels, eye " << x << ", " << z;
+                    const bool inside = glm::all(glm::greaterThanEqual(eye, b.min)) &&
+                                        glm::all(glm::lessThanEqual(eye, b.max));
+                    if (inside) {
+                        // At most the spare voxels' share coarser than twice the longest side.
+                        const float spare = float(n) / (float(n) - 2.0f * float(vxgi::clipSpareVoxels(n)));
+                        EXPECT_LE(v, 2.0f * 0.56f / (float(n) * float(1u << (levels - 1))) * spare * 1.0001f);
+                    } else {
+                        ++outside;
+                    }
+                }
+    EXPECT_GT(outside, 100);
+    // A given voxel too small for the camera's distance: the check says so.
+    const glm::vec3 eye(0.28f, 0.27f, -0.76f);
+    EXPECT_FALSE(vxgi::clipCoarsestHolds(b, eye, vxgi::clipLattice(b, 0.01f), 0.01f, 64, 1));
 }
 
 // A directional light of 3 W/m^2 travelling along `direction`.
@@ -472,6 +506,58 @@ TEST_F(Clipmap, IndirectLightIsContinuousAcrossALevelBorder) {
     std::printf("  largest step between neighbouring pixels / mean: clipmap %.3f, fitted grid %.3f\n", stepClip,
                 stepFitted);
     EXPECT_LE(stepClip, 1.5 * stepFitted);
+}
+
+double meanIndirect(const render::Renderer& r) {
+    const image::ImageRGBA32F img = r.readTerm(sh::TERM_INDIRECT);
+    double sum = 0.0;
+    for (size_t p = 0; p < img.pixelCount(); ++p) sum += luminance(img.rgba.data() + 4 * p);
+    return sum / double(img.pixelCount());
+}
+
+// A room open at the top, seen from 2.2 m above it, outside the scene (as a
+// Cornell box's camera stands in front of its open side). With the default
+// level-0 voxel the coarsest window must still hold it, and level 0, around
+// the camera, holds nothing; a converging render must then judge the change
+// over every level (it stopped after one bounce when it counted level 0's
+// alone) and end where a fixed run of many bounces does.
+TEST_F(Clipmap, ConvergesWhenTheFinestLevelHoldsNothing) {
+    scene::Scene s;
+    const int grey = addMaterial(s, glm::vec3(0.8f));
+    const float q = glm::half_pi<float>();
+    addQuad(s, grey, glm::vec3(0.0f), 0.5f);
+    addQuad(s, grey, glm::vec3(0.0f, 0.5f, -0.5f), 0.5f, glm::angleAxis(q, glm::vec3(1, 0, 0)));
+    addQuad(s, grey, glm::vec3(-0.5f, 0.5f, 0.0f), 0.5f, glm::angleAxis(-q, glm::vec3(0, 0, 1)));
+    addQuad(s, grey, glm::vec3(0.5f, 0.5f, 0.0f), 0.5f, glm::angleAxis(q, glm::vec3(0, 0, 1)));
+    addTopDownCamera(s, 2.2f, glm::radians(35.0f));
+    addSun(s, glm::vec3(0.4f, -1.0f, -0.3f));
+    render::RenderSettings rs = clipSettings(3);
+    rs.clipmap.voxelSize = 0.0f;
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Converge;
+    render::Renderer converging(context(), s, rs);
+    const render::FrameStats c = converging.renderFrame();
+    EXPECT_EQ(listHeader(*converging.levelVolumes()[0]).counts.x, 0u) << "level 0 was to hold no voxel";
+    EXPECT_GT(listHeader(*converging.levelVolumes()[2]).counts.x, 100u);
+    render::RenderSettings fs = rs;
+    fs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    fs.voxelLight.bounces = 16;
+    render::Renderer fixed(context(), s, fs);
+    fixed.renderFrame();
+    const double a = meanIndirect(converging), b = meanIndirect(fixed);
+    std::printf("  converged after %u bounces (change %.2e): mean indirect %.5f; 16 bounces: %.5f (ratio %.4f)\n",
+                c.bounces, c.bounceChange, a, b, a / b);
+    EXPECT_TRUE(c.converged);
+    EXPECT_GT(c.bounces, 2u);
+    EXPECT_GT(b, 0.0);
+    EXPECT_NEAR(a / b, 1.0, 0.02);
+    // A given level-0 voxel whose coarsest window misses the room: one warning says so.
+    render::RenderSettings small = rs;
+    small.clipmap.voxelSize = 0.01f;
+    const render::Renderer cut(context(), s, small);
+    const auto& w = cut.warnings();
+    EXPECT_EQ(std::count_if(w.begin(), w.end(),
+                            [](const std::string& m) { return m.find("leaves part of the scene out") != m.npos; }),
+              1);
 }
 
 // Shadow cones (--shadows cone) trace the levels too: with one level, the
