@@ -73,7 +73,7 @@ void modelTraffic(const gpu::Context& ctx, const render::Renderer& renderer, con
     in.dynamicGeometryBytes = geometry.dynamicBytes;
     in.bounces = bounces;
     in.bounceRays = renderer.bounceRays();
-    in.coneResolve = s.gather.spin && s.cones.coneSet == shader::CONE_SET_6;
+    in.resolvePasses = render::resolvePasses(s.gather, renderer.gatherRays(), s.cones.coneSet);
     in.backsDark = s.voxelLight.backsDark;
     if (const vxgi::VoxelVolumes* volumes = renderer.volumes()) {
         const auto start = std::chrono::steady_clock::now();

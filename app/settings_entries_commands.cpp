@@ -88,6 +88,13 @@ std::vector<Setting> conesAndCommands() {
                       kAll, kFrame},
                      1, 1024, FIELD(settings.gather.rays)),
              "8"),
+        with(integer({"gather-ray-filter", kCones, "P", "",
+                      "--gather-trace rays with --cone-spin on: the 3x3 tent that averages neighbouring pixels' "
+                      "rays runs P times, its taps 1, 2, 4, ... trace pixels apart, each weighing how alike the "
+                      "surfaces are (an a-trous filter that stays on a surface); 1 = the tent alone",
+                      kAll, kFrame},
+                     1, 5, FIELD(settings.gather.rayFilterPasses)),
+             "2"),
         with(number({"gather-ray-offset", kCones, "V", "voxels",
                      "--gather-trace rays: ray origins move V voxels along the normal (voxels of the pixel's own "
                      "surface are passed however far)",

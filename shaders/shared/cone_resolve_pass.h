@@ -1,6 +1,6 @@
-// The six-cone set's interleaving resolved (render/gather.cpp,
-// cone_resolve.comp): bindings, push constants, workgroup size, the turns;
-// shared by C++ and GLSL.
+// The six-cone set's interleaving resolved, and the gather's rays filtered
+// (render/gather.cpp, cone_resolve.comp): bindings, push constants, workgroup
+// size, the turns; shared by C++ and GLSL.
 #ifndef DVSGI_SHARED_CONE_RESOLVE_PASS_H
 #define DVSGI_SHARED_CONE_RESOLVE_PASS_H
 
@@ -24,8 +24,9 @@ DVSGI_CONST(uint, BIND_RESOLVE_OUT, 4);     // the same resolved (RGBA16F)
 
 struct ConeResolvePush {
     uvec4 sizes;  // x trace width, y trace height, z G-buffer width, w G-buffer height
+    uvec4 step;   // x: trace pixels between the tent's taps (pass k of the rays' filter: 2^k)
 };
-DVSGI_CHECK_SIZE(ConeResolvePush, 16);
+DVSGI_CHECK_SIZE(ConeResolvePush, 32);
 
 DVSGI_CONST(uint, RESOLVE_GROUP, 8);
 

@@ -129,10 +129,11 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
     if (in.voxels > 0) {
         // Base colour (roughness, metallic), normal and depth per traced pixel.
         out.push_back({"cone tracing", trace * (2 * kGBufferColorBytes + kDepthBytes), trace * 2 * kTermBytes});
-        // The turned term, normal and depth of each trace pixel (read once;
+        // Per pass, the term, normal and depth of each trace pixel (read once;
         // the 3x3 neighbours share them), the resolved term written.
-        if (in.coneResolve)
-            out.push_back({"cone set resolve", trace * (kTermBytes + kGBufferColorBytes + kDepthBytes), trace * kTermBytes});
+        if (in.resolvePasses > 0)
+            out.push_back({"cone set resolve", in.resolvePasses * trace * (kTermBytes + kGBufferColorBytes + kDepthBytes),
+                           in.resolvePasses * trace * kTermBytes});
         if (trace != internal)
             out.push_back({"upsample", trace * 2 * kTermBytes + internal * (kGBufferColorBytes + kDepthBytes),
                            internal * 2 * kTermBytes});

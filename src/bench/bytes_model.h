@@ -26,7 +26,8 @@ struct ModelInputs {
     bool bounceRays = false;  // the bounce marches rays (--bounce-trace rays): three dispatches, and with
                               // bounces > 0 no filtering before the first
     bool temporal = false;  // the temporal accumulation of the indirect term runs (with voxels)
-    bool coneResolve = false;  // the six cones turned per pixel and resolved (--cone-spin on, --cones 6)
+    uint32_t resolvePasses = 0;  // runs of the resolve's tent (render::resolvePasses): turned cones 1, rays
+                                 // --gather-ray-filter
     bool backsDark = false;    // the filter reads the voxels' normals (--voxel-backs-dark on)
 };
 

@@ -88,24 +88,35 @@ GatherPass::GatherPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     upsample_ = gpu::Pipeline(ctx, gpu::Spirv(kUpsample), up, "upsample");
 }
 
-void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in,
+uint32_t resolvePasses(const GatherSettings& s, bool rays, uint32_t coneSet) {
+    if (rays) return s.spin ? s.rayFilterPasses : 0u;
+    return s.spin && coneSet == sh::CONE_SET_6 && s.fixedTurn < 0 ? 1u : 0u;
+}
+
+void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, uint32_t passes,
                                const gpu::Image& turned, const gpu::Image& resolved, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "cone set resolve");
     const GBuffer& g = in.gbuffer;
-    tracker.image(turned, gpu::use::ComputeRead).image(resolved, gpu::use::ComputeWrite, true).flush(cmd);
-    gpu::bind(cmd, resolve_);
     const VkSampler point = in.samplers.point.handle();
-    gpu::Descriptors()
-        .uniformBuffer(sh::BIND_RESOLVE_FRAME, in.frame.handle())
-        .sampledImage(sh::BIND_RESOLVE_NORMAL, g.normal.view(), point)
-        .sampledImage(sh::BIND_RESOLVE_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-        .storageImage(sh::BIND_RESOLVE_TRACED, turned.view())
-        .storageImage(sh::BIND_RESOLVE_OUT, resolved.view())
-        .push(ctx_, cmd, resolve_);
     const uint32_t width = turned.desc().extent.width, height = turned.desc().extent.height;
-    const sh::ConeResolvePush push{glm::uvec4(width, height, g.depth.desc().extent.width, g.depth.desc().extent.height)};
-    gpu::pushConstants(cmd, resolve_, VK_SHADER_STAGE_COMPUTE_BIT, push);
-    vkCmdDispatch(cmd, gpu::groupCount(width, sh::RESOLVE_GROUP), gpu::groupCount(height, sh::RESOLVE_GROUP), 1);
+    const glm::uvec4 sizes(width, height, g.depth.desc().extent.width, g.depth.desc().extent.height);
+    gpu::bind(cmd, resolve_);
+    const gpu::Image* from = passes % 2 ? &turned : &resolved;
+    for (uint32_t k = 0; k < passes; ++k) {
+        const gpu::Image* to = from == &turned ? &resolved : &turned;
+        tracker.image(*from, gpu::use::ComputeRead).image(*to, gpu::use::ComputeWrite, true).flush(cmd);
+        gpu::Descriptors()
+            .uniformBuffer(sh::BIND_RESOLVE_FRAME, in.frame.handle())
+            .sampledImage(sh::BIND_RESOLVE_NORMAL, g.normal.view(), point)
+            .sampledImage(sh::BIND_RESOLVE_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+            .storageImage(sh::BIND_RESOLVE_TRACED, from->view())
+            .storageImage(sh::BIND_RESOLVE_OUT, to->view())
+            .push(ctx_, cmd, resolve_);
+        const sh::ConeResolvePush push{sizes, glm::uvec4(1u << k, 0u, 0u, 0u)};
+        gpu::pushConstants(cmd, resolve_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+        vkCmdDispatch(cmd, gpu::groupCount(width, sh::RESOLVE_GROUP), gpu::groupCount(height, sh::RESOLVE_GROUP), 1);
+        from = to;
+    }
 }
 
 void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const GatherTargets& out,
@@ -114,10 +125,12 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
     const gpu::Image& outD = reduced ? *out.traceDiffuse : out.diffuse;
     const bool rays = in.rays != nullptr && in.clip == nullptr && s.trace == GatherTrace::Rays;
     // With the turned six cones the gather writes the turned term, resolved
-    // into outD; rays differ from pixel to pixel and are resolved the same way.
+    // into outD; rays differ from pixel to pixel and are filtered the same
+    // way, more than once (recordResolve's ping-pong ends in outD).
     const bool spin = !rays && s.spin && cone.coneSet == sh::CONE_SET_6;
-    const bool resolve = (spin && s.fixedTurn < 0) || (rays && s.spin);
-    const gpu::Image& tracedD = resolve ? out.turnedDiffuse : outD;
+    const uint32_t passes = resolvePasses(s, rays, cone.coneSet);
+    const bool resolve = passes > 0;
+    const gpu::Image& tracedD = passes % 2 ? out.turnedDiffuse : outD;
     const gpu::Image& outS = reduced ? *out.traceSpecular : out.specular;
     const GBuffer& g = in.gbuffer;
     const vxgi::VoxelVolumes& v = in.volumes;
@@ -176,7 +189,7 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
         gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(traceWidth, sh::GATHER_GROUP), gpu::groupCount(traceHeight, sh::GATHER_GROUP), 1);
     }
-    if (resolve) recordResolve(cmd, tracker, in, out.turnedDiffuse, outD, timers);
+    if (resolve) recordResolve(cmd, tracker, in, passes, out.turnedDiffuse, outD, timers);
     if (!reduced) return;
     gpu::GpuTimerScope timer(timers, cmd, "upsample");
     const uint32_t width = out.diffuse.desc().extent.width, height = out.diffuse.desc().extent.height;

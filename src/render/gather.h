@@ -45,7 +45,15 @@ struct GatherSettings {
     // Tests: with spin, every pixel turned by this many steps (0..CONE_SPIN_STEPS-1)
     // and nothing resolved; -1: turned per pixel and resolved.
     int fixedTurn = -1;
+    // Rays with spin: the resolve's tent runs this many times, its taps 1, 2,
+    // 4, ... trace pixels apart (docs/quality.md, "The rays filtered"); 1 =
+    // the tent alone.
+    uint32_t rayFilterPasses = 3;
 };
+
+// How many times the resolve's tent runs over the gather's term (0: no
+// resolve): the turned six cones once, rays rayFilterPasses times.
+uint32_t resolvePasses(const GatherSettings& s, bool rays, uint32_t coneSet);
 
 struct GatherInputs {
     const GBuffer& gbuffer;
@@ -80,9 +88,11 @@ public:
                 const GatherSettings& settings, const vxgi::ConeSettings& cone, gpu::GpuTimers* timers) const;
 
 private:
-    // The turned six cones' term (trace size) resolved by a 3x3 tent into `resolved`.
-    void recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, const gpu::Image& turned,
-                       const gpu::Image& resolved, gpu::GpuTimers* timers) const;
+    // The gather's term (trace size) resolved by `passes` runs of the 3x3
+    // tent into `resolved`, ping-ponging with `turned`: the gather wrote it
+    // into `turned` if `passes` is odd, else into `resolved`.
+    void recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, uint32_t passes,
+                       const gpu::Image& turned, const gpu::Image& resolved, gpu::GpuTimers* timers) const;
 
     const gpu::Context& ctx_;
     gpu::Pipeline gather_, clipGather_, rayGather_, resolve_, upsample_;

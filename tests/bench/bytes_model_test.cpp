@@ -104,9 +104,12 @@ TEST(BytesModel, TemporalIndirectRunsOnlyWhenOnAndReadsItsHistory) {
 TEST(BytesModel, TurnedConesAddTheirResolve) {
     ModelInputs in = handCase();
     EXPECT_EQ(findPass(passTraffic(in), "cone set resolve"), nullptr);
-    in.coneResolve = true;
+    in.resolvePasses = 1;
     // 160x90 trace pixels: the turned term (8), normal (8) and depth (4) in, the resolved term (8) out.
     expectPass(passTraffic(in), "cone set resolve", 14400 * (8 + 8 + 4), 14400 * 8);
+    // The rays' filter: three passes, each the same traffic.
+    in.resolvePasses = 3;
+    expectPass(passTraffic(in), "cone set resolve", 3 * 14400 * (8 + 8 + 4), 3 * 14400 * 8);
 }
 
 TEST(BytesModel, DarkBacksReadTheVoxelsNormalsInTheFilter) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -105,6 +106,82 @@ TEST_F(ConeSpin, ResolvedTurnsMatchTheFourTurnsInterleavedAndFiltered) {
     EXPECT_GT(worstTurn, 0.4);
     EXPECT_LT(worstResolve, 0.0015);
     EXPECT_NEAR(sumResolved / sumTurns, 1.0, 0.0015);
+}
+
+// The gather's rays (GatherTrace::Rays) differ from pixel to pixel; with spin
+// on, the resolve's tent runs rayFilterPasses times, its taps 1, 2, 4, ...
+// pixels apart. Each pixel's own rays (spin off: nothing filtered) filtered
+// the same way on the CPU must match the renderer's filtered floor wherever
+// the filter reaches only floor pixels (3 passes: 7 pixels each way).
+TEST_F(ConeSpin, RaysFilteredMatchEachPixelsOwnRaysFilteredOnTheCpu) {
+    const scene::Scene s = wallScene();
+    render::RenderSettings rs = settings(-1);
+    rs.gather.trace = render::GatherTrace::Rays;
+    rs.gather.rayFilterPasses = 3;
+    const image::ImageRGBA32F filtered = render(s, rs);
+    rs.gather.spin = false;
+    const image::ImageRGBA32F own = render(s, rs);
+
+    const scene::PlacedCamera cam = scene::placedCameras(s, scene::worldMatrices(s)).at(0);
+    const glm::vec3 eye(cam.world[3]);
+    const int n = int(kSize);
+    std::vector<double> distance(size_t(n * n)), value(size_t(n * n));
+    std::vector<bool> floor(size_t(n * n));
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const glm::vec3 p = pixelOnPlane(s, rs, uint32_t(x), uint32_t(y), 0.0f);
+            const size_t i = size_t(y * n + x);
+            distance[i] = glm::length(p - eye);
+            floor[i] = std::abs(p.x) < 0.95f && std::abs(p.z) < 0.95f;
+            value[i] = own.at(uint32_t(x), uint32_t(y))[1];
+        }
+    constexpr int kReach = 7;  // 1 + 2 + 4
+    for (uint32_t k = 0; k < rs.gather.rayFilterPasses; ++k) {
+        const int step = 1 << k;
+        std::vector<double> next = value;
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const size_t i = size_t(y * n + x);
+                if (!floor[i]) continue;
+                double sum = 0.0, wsum = 0.0;
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int qx = x + dx * step, qy = y + dy * step;
+                        if (qx < 0 || qy < 0 || qx >= n || qy >= n || !floor[size_t(qy * n + qx)]) continue;
+                        const size_t q = size_t(qy * n + qx);
+                        const double dz = std::abs(distance[q] - distance[i]) / distance[i];
+                        const double w = double((2 - std::abs(dx)) * (2 - std::abs(dy))) / (1.0 + 100.0 * dz);
+                        sum += w * value[q];
+                        wsum += w;
+                    }
+                next[i] = sum / wsum;
+            }
+        value = std::move(next);
+    }
+    double worst = 0.0, sumGot = 0.0, sumOwn = 0.0, ownSpread = 0.0, gotSpread = 0.0;
+    int count = 0;
+    for (int y = kReach; y + kReach < n; ++y)
+        for (int x = kReach; x + kReach < n; ++x) {
+            bool inside = true;
+            for (int dy = -kReach; dy <= kReach && inside; ++dy)
+                for (int dx = -kReach; dx <= kReach && inside; ++dx) inside = floor[size_t((y + dy) * n + x + dx)];
+            if (!inside) continue;
+            const double want = value[size_t(y * n + x)], got = filtered.at(uint32_t(x), uint32_t(y))[1];
+            worst = std::max(worst, std::abs(got / want - 1.0));
+            sumGot += got;
+            sumOwn += own.at(uint32_t(x), uint32_t(y))[1];
+            // Differences between horizontal neighbours: the noise the filter removes.
+            ownSpread += std::abs(double(own.at(uint32_t(x + 1), uint32_t(y))[1]) - own.at(uint32_t(x), uint32_t(y))[1]);
+            gotSpread += std::abs(double(filtered.at(uint32_t(x + 1), uint32_t(y))[1]) - got);
+            ++count;
+        }
+    std::printf("  %d floor pixels: filtered against the CPU's filter: worst %.3f %%; filtered over own light %.4f; "
+                "mean step between neighbours %.2f %% of the mean unfiltered, %.2f %% filtered\n",
+                count, 100.0 * worst, sumGot / sumOwn, 100.0 * ownSpread / sumOwn, 100.0 * gotSpread / sumOwn);
+    ASSERT_GT(count, 2000);
+    EXPECT_LT(worst, 0.003);
+    EXPECT_NEAR(sumGot / sumOwn, 1.0, 0.003);
+    EXPECT_LT(gotSpread, 0.5 * ownSpread);
 }
 
 }  // namespace

@@ -116,6 +116,9 @@ TEST_F(ConeTracing, AmbientOcclusionIsOneOnAnOpenPlaneAndFallsTowardAWall) {
         EXPECT_LE(hi, 1.0f);
     }
     rs.cones.coneSet = sh::CONE_SET_6;
+    // The trace image is 16x16 pixels here: the rays' filter's three passes
+    // would reach 7 of them each way, half the image, and flatten the fall.
+    rs.gather.rayFilterPasses = 1;
 
     // A wall along the plane's x = 0.8 edge, facing -X.
     addQuad(s, white, glm::vec3(0.8f, 0.5f, 0.0f), 0.5f, glm::angleAxis(glm::half_pi<float>(), glm::vec3(0, 0, 1)));
