@@ -56,6 +56,11 @@ private:
 // Which term of the composition the output image holds.
 enum class Output { Full, Direct, Indirect, Specular, AO, Shadow };
 
+// How light is gathered over the voxels: rays walked voxel by voxel through
+// the radiance volume, or the cone set through the filtered volumes (the
+// paper). A clipmap (clipmapLevels > 0) always traces cones.
+enum class Trace { Rays, Cones };
+
 // The common settings. Defaults are those of `dvsgi render`; every other
 // renderer parameter keeps the default documented in `dvsgi --help`.
 struct Settings {
@@ -66,10 +71,14 @@ struct Settings {
     uint32_t clipmapLevels = 0;          // 0 = one grid fitted to the scene; 1..8 levels of N^3 following
                                          // the camera, each twice the voxel of the one before (docs/clipmap.md)
     float clipmapVoxel = 0.0f;           // level 0's voxel edge in metres, 0..1000; 0 = the coarsest level
-                                         // spans twice the scene's longest side
+                                         // holds the whole scene from the starting camera
     int bounces = -1;                    // -1 = converge (auto); K in 0..64 = exactly K per frame
     float bounceConvergence = 0.005f;    // auto: stop when the light still missing is below this
     uint32_t maxBounces = 64;            // auto: give up after this many bounces; 1..1000
+    Trace bounceTrace = Trace::Rays;     // the voxel bounce: 8 rays per voxel, or six cones
+    Trace gatherTrace = Trace::Rays;     // each pixel's indirect diffuse light: gatherRays rays, or `cones`
+    uint32_t gatherRays = 16;            // rays per traced pixel, 1..1024
+    uint32_t gatherRayFilter = 3;        // passes of the rays' surface-aware 3x3 filter, taps 1, 2, 4, ... apart; 1..5
     uint32_t cones = 6;                  // diffuse cone set: 6 (60 degrees) or 16
     bool specular = true;                // reflection cone for glossy materials
     bool ao = false;                     // multiply the indirect terms by the cone AO

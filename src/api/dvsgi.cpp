@@ -76,6 +76,13 @@ void validate(const Settings& s, uint32_t cameras) {
     if (!(s.bounceConvergence >= 1e-5f && s.bounceConvergence <= 0.5f))
         badSetting("bounceConvergence", "0.00001..0.5", std::to_string(s.bounceConvergence));
     if (s.maxBounces < 1 || s.maxBounces > 1000) badSetting("maxBounces", "1..1000", std::to_string(s.maxBounces));
+    if (s.bounceTrace != Trace::Rays && s.bounceTrace != Trace::Cones)
+        badSetting("bounceTrace", "Trace::Rays or Trace::Cones", std::to_string(int(s.bounceTrace)));
+    if (s.gatherTrace != Trace::Rays && s.gatherTrace != Trace::Cones)
+        badSetting("gatherTrace", "Trace::Rays or Trace::Cones", std::to_string(int(s.gatherTrace)));
+    if (s.gatherRays < 1 || s.gatherRays > 1024) badSetting("gatherRays", "1..1024", std::to_string(s.gatherRays));
+    if (s.gatherRayFilter < 1 || s.gatherRayFilter > 5)
+        badSetting("gatherRayFilter", "1..5", std::to_string(s.gatherRayFilter));
     if (s.cones != 6 && s.cones != 16) badSetting("cones", "6 or 16", std::to_string(s.cones));
     if (!(s.aoLambda >= 0.0f && s.aoLambda <= 1000.0f))
         badSetting("aoLambda", "0..1000", std::to_string(s.aoLambda));
@@ -104,6 +111,10 @@ render::RenderSettings toRenderSettings(const Settings& s) {
     if (s.bounces >= 0) rs.voxelLight.bounces = uint32_t(s.bounces);
     rs.voxelLight.convergence = s.bounceConvergence;
     rs.voxelLight.maxBounces = s.maxBounces;
+    rs.voxelLight.bounceTrace = s.bounceTrace == Trace::Rays ? vxgi::BounceTrace::Rays : vxgi::BounceTrace::Cones;
+    rs.gather.trace = s.gatherTrace == Trace::Rays ? render::GatherTrace::Rays : render::GatherTrace::Cones;
+    rs.gather.rays = s.gatherRays;
+    rs.gather.rayFilterPasses = s.gatherRayFilter;
     rs.cones.coneSet = s.cones;
     rs.gather.aoLambda = s.aoLambda;
     rs.gather.specular = s.specular;

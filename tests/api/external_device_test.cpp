@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -352,6 +353,39 @@ TEST_F(AppDevice, MatchesARenderOnDvsgisOwnDevice) {
     EXPECT_LT(e, 1e-4);
 }
 
+// The tracing choices reach the renderer: each one changes the image, and
+// their defaults are the ones `dvsgi render` has (embed_install.py renders
+// the defaults both ways).
+TEST_F(AppDevice, TraceSettingsChangeTheImage) {
+    const dvsgi::Scene scene = dvsgi::Scene::cornellBox();
+    dvsgi::Settings s = smallSettings();
+    s.bounces = 1;
+    auto image = [&](const dvsgi::Settings& settings) {
+        dvsgi::Renderer renderer(scene, settings, external());
+        renderer.render();
+        return renderer.readImage().rgba;
+    };
+    const std::vector<float> base = image(s);
+    std::vector<std::pair<const char*, dvsgi::Settings>> variants;
+    dvsgi::Settings v = s;
+    v.gatherTrace = dvsgi::Trace::Cones;
+    variants.push_back({"gatherTrace cones", v});
+    v = s;
+    v.bounceTrace = dvsgi::Trace::Cones;
+    variants.push_back({"bounceTrace cones", v});
+    v = s;
+    v.gatherRays = 4;
+    variants.push_back({"gatherRays 4", v});
+    v = s;
+    v.gatherRayFilter = 1;
+    variants.push_back({"gatherRayFilter 1", v});
+    for (const auto& [name, settings] : variants) {
+        const double e = relRmse(image(settings), base);
+        std::printf("  %s against the defaults: relative RMSE %.2e\n", name, e);
+        EXPECT_GT(e, 1e-3) << name;
+    }
+}
+
 TEST_F(AppDevice, ErrorsNameTheSetting) {
     const dvsgi::Scene scene = dvsgi::Scene::cornellBox();
     auto message = [&](dvsgi::Settings s) -> std::string {
@@ -377,6 +411,15 @@ TEST_F(AppDevice, ErrorsNameTheSetting) {
     s = smallSettings();
     s.clipmapVoxel = -1.0f;
     EXPECT_NE(message(s).find("Settings::clipmapVoxel"), std::string::npos) << message(s);
+    s = smallSettings();
+    s.gatherRays = 0;
+    EXPECT_NE(message(s).find("Settings::gatherRays"), std::string::npos) << message(s);
+    s = smallSettings();
+    s.gatherRayFilter = 6;
+    EXPECT_NE(message(s).find("Settings::gatherRayFilter"), std::string::npos) << message(s);
+    s = smallSettings();
+    s.bounceTrace = dvsgi::Trace(7);
+    EXPECT_NE(message(s).find("Settings::bounceTrace"), std::string::npos) << message(s);
     s = smallSettings();
     s.clipmapLevels = 2;
     EXPECT_EQ(message(s), "<no error>");
