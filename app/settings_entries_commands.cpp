@@ -84,7 +84,7 @@ std::vector<Setting> conesAndCommands() {
              "cones", "cones or rays"),
         with(integer({"gather-rays", kCones, "R", "",
                       "--gather-trace rays: rays per traced pixel, the same every frame; the 3x3 resolve "
-                      "(--cone-spin's) averages neighbours' rays",
+                      "(--cone-spin's) averages neighbours' rays, --gather-ray-filter times",
                       kAll, kFrame},
                      1, 1024, FIELD(settings.gather.rays)),
              "8"),

@@ -72,7 +72,8 @@ void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, float turn, ou
     float occlusion;
 #ifdef DVSGI_RAYS
     // The same rays every frame: a still image does not flicker. The resolve's
-    // 3x3 tent averages each pixel's rays with its neighbours'.
+    // 3x3 tent, run --gather-ray-filter times with wider taps, averages each
+    // pixel's rays with its neighbours' on the same surface.
     float s = grid.originSize.w;
     uvec2 px = gl_GlobalInvocationID.xy;
     vec3 E = PI * pixelRaysCosine((P - grid.originSize.xyz) / s, N, uintBitsToFloat(pc.rays.y), pc.rays.x,
