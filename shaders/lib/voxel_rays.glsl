@@ -133,6 +133,29 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
     return false;
 }
 
+// What voxelRaysCosine and pixelRaysCosine share. The axes of the disk the
+// rays' directions are drawn on, about n.
+void rayDisk(vec3 n, out vec3 tx, out vec3 b) {
+    tx = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
+    b = cross(n, tx);
+}
+// A seed's shift of the R2 sequence (low 16 bits: u, high: v, in 1/65536).
+vec2 rayShift(uint seed) { return vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0; }
+// Ray i of the R2 sequence shifted by `shift`, cosine-distributed about n
+// (disk axes tx, b): the point of the unit disk lifted onto the hemisphere.
+vec3 cosineRay(vec2 shift, uint i, vec3 tx, vec3 b, vec3 n) {
+    vec2 u = fract(shift + float(i) * vec2(RAY_R2_U, RAY_R2_V));
+    float rad = sqrt(u.x), phi = TWO_PI * u.y;
+    return normalize(tx * (rad * cos(phi)) + b * (rad * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
+}
+// 1 / d, with axes too near 0 held at 1e7.
+vec3 rayInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7))); }
+// Each coarse level's rayOccupancyOffset (level 0's is 0), as voxelRayStep takes them.
+uvec4 rayOccupancyOffsets() {
+    return uvec4(0u, rayOccupancyOffset(grid.dims.x, 1u), rayOccupancyOffset(grid.dims.x, 2u),
+                 rayOccupancyOffset(grid.dims.x, 3u));
+}
+
 // The mean radiance over `count` cosine-distributed rays about n from voxel
 // v, i.e. E / pi, and in `back` the same over `backCount` rays about -n
 // (seed `backSeed`; a two-sided voxel's other side, else 0 rays). The
@@ -148,17 +171,15 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
                      bool backsDark, out vec3 back) {
     int N = int(grid.dims.x);
     vec3 self = vec3(v) + 0.5;
-    vec3 tx = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
-    vec3 b = cross(n, tx);
-    vec2 frontShift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
-    vec2 backShift = vec2(float(backSeed & 0xffffu), float(backSeed >> 16)) / 65536.0;
+    vec3 tx, b;
+    rayDisk(n, tx, b);
+    vec2 frontShift = rayShift(seed), backShift = rayShift(backSeed);
     vec3 front = vec3(0.0), d = n, inv = vec3(1.0), side = n, origin = self;
     back = vec3(0.0);
     float t = 0.0;
     int step = 0;
     uint ray = 0u, total = count + backCount;
-    uvec4 offsets = uvec4(0u, rayOccupancyOffset(grid.dims.x, 1u), rayOccupancyOffset(grid.dims.x, 2u),
-                          rayOccupancyOffset(grid.dims.x, 3u));
+    uvec4 offsets = rayOccupancyOffsets();
     for (int k = 0; ray < total && k < int(total) * 4 * N; ++k) {
         if (step == 0) {
             // The back side's frame is the front's turned about b: (-tx, b, -n).
@@ -166,10 +187,8 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
             float sign = isBack ? -1.0 : 1.0;
             side = n * sign;
             origin = self + side * offset;
-            vec2 u = fract((isBack ? backShift : frontShift) + float(isBack ? ray - count : ray) * vec2(RAY_R2_U, RAY_R2_V));
-            float rad = sqrt(u.x), phi = TWO_PI * u.y;
-            d = normalize(tx * (sign * rad * cos(phi)) + b * (rad * sin(phi)) + side * sqrt(max(1.0 - u.x, 0.0)));
-            inv = 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7)));
+            d = cosineRay(isBack ? backShift : frontShift, isBack ? ray - count : ray, tx * sign, b, side);
+            inv = rayInverse(d);
             t = 0.0;
         }
         vec3 seen;
@@ -200,12 +219,11 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
 vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float aoLambda, bool backsDark,
                      out float occlusion) {
     int N = int(grid.dims.x);
-    vec3 tx = normalize(abs(n.x) < 0.9 ? cross(n, vec3(1.0, 0.0, 0.0)) : cross(n, vec3(0.0, 1.0, 0.0)));
-    vec3 b = cross(n, tx);
-    vec2 shift = vec2(float(seed & 0xffffu), float(seed >> 16)) / 65536.0;
+    vec3 tx, b;
+    rayDisk(n, tx, b);
+    vec2 shift = rayShift(seed);
     vec3 origin = p + n * offset;
-    uvec4 offsets = uvec4(0u, rayOccupancyOffset(grid.dims.x, 1u), rayOccupancyOffset(grid.dims.x, 2u),
-                          rayOccupancyOffset(grid.dims.x, 3u));
+    uvec4 offsets = rayOccupancyOffsets();
     vec3 sum = vec3(0.0), d = n, inv = vec3(1.0);
     occlusion = 0.0;
     float t = 0.0;
@@ -214,10 +232,8 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
     // One loop over all rays' steps, as in voxelRaysCosine.
     for (int k = 0; ray < count && k < int(count) * 4 * N; ++k) {
         if (step == 0) {
-            vec2 u = fract(shift + float(ray) * vec2(RAY_R2_U, RAY_R2_V));
-            float rad = sqrt(u.x), phi = TWO_PI * u.y;
-            d = normalize(tx * (rad * cos(phi)) + b * (rad * sin(phi)) + n * sqrt(max(1.0 - u.x, 0.0)));
-            inv = 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7)));
+            d = cosineRay(shift, ray, tx, b, n);
+            inv = rayInverse(d);
             t = 0.0;
             ivec3 c = ivec3(floor(origin));
             if (all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(N))) && RAY_RADIANCE(c).a > 0.0) {
