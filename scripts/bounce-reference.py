@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Per-bounce reference radiance of a small glTF scene, traced on the CPU.
 
-    scripts/bounce-reference.py SCENE.gltf OUT_PREFIX [--size 64] [--spp 64] [--bounces 6]
+    scripts/bounce-reference.py SCENE.gltf OUT_PREFIX [--size 64] [--spp 64] [--bounces 6] [--pixel-centres]
 
 Writes OUT_PREFIX-direct.npy and OUT_PREFIX-bounceK.npy (K = 1..bounces): the
 radiance each bounce adds, per pixel (float32, rows top to bottom, linear RGB),
@@ -12,9 +12,15 @@ white walls a small error per bounce is multiplied several times over.
 
 Scope, stated so nobody reads more into it: Lambertian materials with a
 constant baseColorFactor (no textures), punctual point and directional lights
-(ideal, inverse square, hard shadows), no emission, meshes under nodes without
+(ideal, inverse square, hard shadows), one-sided emissive triangles (emissiveFactor
+x KHR_materials_emissive_strength, front face by winding; sampled by area at
+every hit, so a path that meets an emitter after the first hit adds nothing:
+its light came through that sampling), meshes under nodes without
 transforms, the scene's first camera node (translation + rotation). Pixel
-centres jittered within the pixel (box filter), cosine-weighted hemisphere
+centres jittered within the pixel (box filter, as the path-traced references
+are), or with --pixel-centres every sample through the pixel's centre (as a
+rasterizer's G-buffer samples it: an edge pixel then shows one surface, not
+a blend of the two), cosine-weighted hemisphere
 sampling, back faces reflect like front faces (shared/reference/CONVENTIONS.md).
 Brute force with numpy: fine for tens of triangles, not for Sponza.
 """
@@ -55,7 +61,7 @@ def load(path):
         off = view.get("byteOffset", 0) + a.get("byteOffset", 0)
         return np.frombuffer(blobs[view["buffer"]], dtype, a["count"] * comps, off).reshape(-1, comps)
 
-    tris, albedo = [], []
+    tris, albedo, emission = [], [], []
     for node in g["nodes"]:
         if "mesh" not in node:
             continue
@@ -65,11 +71,13 @@ def load(path):
             pos = accessor(prim["attributes"]["POSITION"]).astype(np.float64)
             idx = accessor(prim["indices"]).reshape(-1, 3)
             mat = g["materials"][prim["material"]]
-            if "emissiveFactor" in mat and any(mat["emissiveFactor"]):
-                fail("%s: emissive materials are not supported here" % path)
+            if "emissiveTexture" in mat:
+                fail("%s: emissive textures are not supported here" % path)
+            strength = mat.get("extensions", {}).get("KHR_materials_emissive_strength", {}).get("emissiveStrength", 1.0)
             rho = mat.get("pbrMetallicRoughness", {}).get("baseColorFactor", [1, 1, 1, 1])[:3]
             tris.append(pos[idx])
             albedo += [rho] * len(idx)
+            emission += [[c * strength for c in mat.get("emissiveFactor", [0, 0, 0])]] * len(idx)
     tris = np.concatenate(tris)
     lights = []
     for node in g["nodes"]:
@@ -90,17 +98,23 @@ def load(path):
     q = cam_node.get("rotation", [0, 0, 0, 1])
     eye = np.array(cam_node.get("translation", [0, 0, 0]), float)
     axes = [quat_rotate(q, np.array(v, float)) for v in ([1, 0, 0], [0, 1, 0], [0, 0, -1])]
-    return tris, np.array(albedo, float), lights, (eye, axes, cam["yfov"])
+    return tris, np.array(albedo, float), np.array(emission, float), lights, (eye, axes, cam["yfov"])
 
 
 class Tracer:
-    def __init__(self, tris, albedo):
+    def __init__(self, tris, albedo, emission):
         self.v0 = tris[:, 0]
         self.e1 = tris[:, 1] - tris[:, 0]
         self.e2 = tris[:, 2] - tris[:, 0]
         n = np.cross(self.e1, self.e2)
-        self.normal = n / np.linalg.norm(n, axis=1, keepdims=True)
+        area = 0.5 * np.linalg.norm(n, axis=1)
+        self.normal = n / (2.0 * area)[:, None]
         self.albedo = albedo
+        self.emission = emission
+        # Emitters, chosen with probability proportional to their area.
+        self.emitters = np.flatnonzero(emission.max(axis=1) > 0)
+        self.emitter_area = float(area[self.emitters].sum())
+        self.emitter_cdf = np.cumsum(area[self.emitters]) / max(self.emitter_area, 1e-30)
 
     def hit(self, o, d, tmax=np.inf):
         """Nearest hit per ray (Moller-Trumbore against every triangle): t and triangle (-1 = none)."""
@@ -122,9 +136,35 @@ class Tracer:
         return best_t, best_i
 
 
-def direct(tracer, lights, p, n, rho):
-    """Lambertian radiance from the punctual lights at points p (normals n facing the viewer)."""
+def emitted_light(tracer, p, n, rng):
+    """Irradiance / pi at points p (normals n) from the emitters, one area sample per point:
+    E = L_e cos_r cos_e / d^2 over the pdf 1 / (total emitter area)."""
+    pick = tracer.emitters[np.minimum(np.searchsorted(tracer.emitter_cdf, rng.random(len(p))),
+                                      len(tracer.emitters) - 1)]
+    u, v = rng.random(len(p)), rng.random(len(p))
+    flip = u + v > 1
+    u, v = np.where(flip, 1 - u, u), np.where(flip, 1 - v, v)
+    q = tracer.v0[pick] + u[:, None] * tracer.e1[pick] + v[:, None] * tracer.e2[pick]
+    to = q - p
+    dist = np.linalg.norm(to, axis=1)
+    l = to / dist[:, None]
+    cos_r = np.einsum("ij,ij->i", n, l)
+    cos_e = -np.einsum("ij,ij->i", tracer.normal[pick], l)  # one-sided: the emitter's front faces p
+    ok = (cos_r > 0) & (cos_e > 0)
+    origin = p + n * 1e-5
+    t, _ = tracer.hit(origin[ok], np.ascontiguousarray(l[ok]), dist[ok] - 1e-4)
+    vis = np.zeros(len(p))
+    vis[ok] = np.isinf(t)
+    g = vis * np.where(ok, cos_r * cos_e, 0.0) / dist ** 2
+    return tracer.emission[pick] * (g * tracer.emitter_area / np.pi)[:, None]
+
+
+def direct(tracer, lights, p, n, rho, rng):
+    """Lambertian radiance from the punctual lights and the emitters at points p (normals n facing the
+    viewer)."""
     out = np.zeros((len(p), 3))
+    if len(tracer.emitters):
+        out += rho * emitted_light(tracer, p, n, rng)
     for kind, value, colour in lights:
         if kind == "point":
             to = value - p
@@ -187,15 +227,17 @@ def main():
     ap.add_argument("--spp", type=int, default=64)
     ap.add_argument("--bounces", type=int, default=6)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--pixel-centres", action="store_true")
     a = ap.parse_args()
-    tris, albedo, lights, camera = load(a.scene)
-    tracer = Tracer(tris, albedo)
+    tris, albedo, emission, lights, camera = load(a.scene)
+    tracer = Tracer(tris, albedo, emission)
     rng = np.random.default_rng(a.seed)
     size = a.size
     terms = np.zeros((a.bounces + 1, size * size, 3))
     pix = np.arange(size * size)
     for _ in range(a.spp):
-        jitter = (rng.random(len(pix)), rng.random(len(pix)))
+        jitter = (np.full(len(pix), 0.5), np.full(len(pix), 0.5)) if a.pixel_centres else \
+            (rng.random(len(pix)), rng.random(len(pix)))
         o, d = camera_rays(camera, size, jitter)
         alive = pix.copy()
         throughput = np.ones((len(pix), 3))
@@ -206,7 +248,10 @@ def main():
             if len(alive) == 0:
                 break
             p, n, rho = surface(tracer, o, d, t, tri)
-            np.add.at(terms[k], alive, throughput * direct(tracer, lights, p, n, rho))
+            if k == 0:  # an emitter the camera sees, from the front
+                front = np.einsum("ij,ij->i", tracer.normal[tri], d) < 0
+                np.add.at(terms[0], alive, tracer.emission[tri] * front[:, None])
+            np.add.at(terms[k], alive, throughput * direct(tracer, lights, p, n, rho, rng))
             # Cosine-weighted sampling: the estimator's weight is the albedo.
             throughput = throughput * rho
             o, d = p + n * 1e-5, cosine_directions(n, rng)
