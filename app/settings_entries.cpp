@@ -383,6 +383,14 @@ std::vector<Setting> imageAndVoxels() {
         with(integer({"emitter-patches", kVoxelLight, "N", "", "area-light patches for all emitters", kAll, kNew}, 1,
                      1024, FIELD(settings.emitterPatches)),
              "16"),
+        with(choice({"emitter-visibility", kVoxelLight, "rays|cones", "",
+                     "--emitters lights: how a pixel sees each patch: rays = a ray to the patch's centre through "
+                     "this frame's voxels, walked as the gather's rays walk them (a fitted grid's; --clipmap "
+                     "levels and --voxelizer pv use cones); cones = a cone as wide as the patch looks through the "
+                     "filtered volumes. Voxels always see patches by rays",
+                     kAll, kFrame},
+                    {{"rays", true}, {"cones", false}}, FIELD(settings.emitterRays)),
+             "cones"),
         with(toggle({"normal-weighted", kVoxelLight, "on|off", "",
                      "normal-weighted attenuation at voxels (paper eq. 5: W = N^2, exact only for planes along the "
                      "axes; a plane at 45 degrees lit head on gets 71 % of its light) or plain Lambert N.L with "

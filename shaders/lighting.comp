@@ -38,6 +38,17 @@ layout(set = 0, binding = BIND_LIGHT_VOXEL_GRID) uniform Grid { VoxelGrid grid; 
 layout(set = 0, binding = BIND_LIGHT_VOXEL_RADIANCE) uniform sampler3D radianceVolume;
 layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D directional;
 #endif
+#ifdef DVSGI_AREA_RAYS
+// Area lights' visibility by a ray to each patch through this frame's voxels
+// (lib/voxel_rays.glsl), as the per-pixel gather's rays walk them.
+#include "shared/bounce_pass.h"
+#include "shared/voxel_list_pass.h"
+layout(set = 0, binding = BIND_LIGHT_RAY_SIDES, rgba32ui) uniform readonly uimage3D sides;
+layout(set = 0, binding = BIND_LIGHT_RAY_NORMALS, r32ui) uniform readonly uimage3D rayNormals;
+layout(set = 0, binding = BIND_LIGHT_RAY_OCCUPANCY, std430) readonly buffer RayOccupancy { uint rayOccupancy[]; };
+VOXEL_INDEX_BLOCK(BIND_LIGHT_RAY_INDEX, readonly);
+#define RAY_RADIANCE(c) texelFetch(radianceVolume, c, 0)
+#endif
 layout(set = 0, binding = BIND_LIGHT_OUT_SHADOW, r16f) uniform writeonly image2D outShadow;
 
 layout(push_constant) uniform Push { LightingPush pc; };
@@ -47,6 +58,11 @@ layout(push_constant) uniform Push { LightingPush pc; };
 #include "lib/shadow_map.glsl"
 #ifndef DVSGI_SHADOW_MAPS_ONLY
 #include "lib/cone_trace.glsl"
+#ifdef DVSGI_AREA_RAYS
+#include "lib/voxel_sides.glsl"
+#include "lib/voxel_index.glsl"
+#include "lib/voxel_rays.glsl"
+#endif
 
 float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     ConeParams p = pc.cone;
@@ -56,6 +72,25 @@ float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
     return 1.0 - traceCone(origin, N, originHeight, L, pc.shadow.y, p, true).a;
 }
 
+#ifdef DVSGI_AREA_RAYS
+// Whether a ray from P reaches the patch's centre: with --emitter-patches
+// patches the shadow is soft in steps of one patch. A cone at least as wide as
+// the shadow cones, whose samples blend a voxel's neighbours in, left the
+// direct light on cornell-emissive's surfaces 3 % short at 64^3
+// (docs/quality.md, "Area lights seen by rays"). The ray stops
+// two voxels short of the emitter's plane, so the emitter's own voxel layer
+// (and a ceiling beside it in the same layer) does not shadow it, as the
+// voxels' own rays to a patch stop (inject.comp).
+float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
+    float s = grid.originSize.w, offset = pc.shadow.z;
+    vec3 p = (P - grid.originSize.xyz) / s;
+    vec3 toEmitter = L * (dist / s) - N * offset;  // from the ray's origin, in voxels
+    float reach = length(toEmitter);
+    vec3 d = toEmitter / reach;
+    reach -= 2.0 / max(abs(dot(emitterNormal, d)), 0.2);
+    return reach <= 0.0 || pixelRayClear(p, N, d, offset, reach) ? 1.0 : 0.0;
+}
+#else
 float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
     ConeParams p = pc.cone;
     float s = traceGrid(CONE_FIRST_LEVEL).originSize.w;
@@ -77,6 +112,7 @@ float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emit
     // levels (rounded) at half the cost of blending two.
     return 1.0 - traceCone(origin, N, originHeight, toEmitter / reach, tanHalf, p, false).a;
 }
+#endif
 #endif
 
 void main() {

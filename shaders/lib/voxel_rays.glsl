@@ -91,8 +91,9 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
 // One step of a ray from voxel-space point p along unit d (1/d = inv), at
 // parameter t, its i-th: whether the ray ends here, with what it met in
 // `seen`, or else t moved to the next cell. It ends at the first occupied
-// voxel not on the surface of `self` (centre, normal n) that it does not pass
-// in front of (that voxel's light), or where it leaves the grid (nothing).
+// voxel not on the surface of `self` (centre, normal n), nor on that of
+// `besideAt` (normal besideN; a zero normal: none), that it does not pass in
+// front of (that voxel's light), or where it leaves the grid (nothing).
 // Empty space is crossed a whole cell at a time, sixteen voxels, eight, four
 // or two, wherever the occupancy bits show the cell empty (`offsets`: each
 // level's rayOccupancyOffset). With `backsDark` a one-sided voxel met from
@@ -101,8 +102,8 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
 // surface's back at no distance: no light (a floor under a box standing on it). Taking that voxel's radiance instead made two
 // surfaces a voxel apart light each other without loss: with albedo 1 (the
 // Cornell box's white) the light between them never converged.
-bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, int N, uvec4 offsets,
-                  bool backsDark, out vec3 seen) {
+bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec3 n, vec3 besideAt, vec3 besideN,
+                  int N, uvec4 offsets, bool backsDark, out vec3 seen) {
     seen = vec3(0.0);
     ivec3 c = ivec3(floor(p + d * t));
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return true;
@@ -121,7 +122,8 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
             // Its slot and normal, read once for the rules below.
             uint slot = voxelSlotAt(c);
             vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
-            if (!onOwnSurface(c, nc, self, n) && (i == 0 || !passesInFront(c, nc, p, d, inv, t))) {
+            if (!onOwnSurface(c, nc, self, n) && !onOwnSurface(c, nc, besideAt, besideN) &&
+                (i == 0 || !passesInFront(c, nc, p, d, inv, t))) {
                 if (i != 0) seen = radianceSeen(slot, r, d);
                 if (backsDark && sideCodeOfOpacity(r.a) == SIDE_ONE) seen *= seenFromFront(nc, d);
                 return true;
@@ -192,7 +194,7 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
             t = 0.0;
         }
         vec3 seen;
-        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, N, offsets, backsDark, seen);
+        bool ends = voxelRayStep(origin, d, inv, t, step, self, side, vec3(0.0), vec3(0.0), N, offsets, backsDark, seen);
         ++step;
         if (ends || step >= 4 * N) {
             if (ray < count) front += seen;
@@ -205,17 +207,62 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
     return front / float(max(count, 1u));
 }
 
+// Where a pixel's ray from `origin` (off surface point p, normal n) along d
+// (1/d = inv) starts: past the voxel it starts in when that is another
+// surface's that it moves away from, else at 0 (pixelRaysCosine says why);
+// that surface's voxels are then passed as the pixel's own (besideAt, besideN;
+// else zero). Where a one-sided surface lies in its voxel is unknown, so a
+// pixel beside it (a corner, a floor under a wall) may start up to half a voxel
+// behind the plane through the voxel's centre: counted as in front. Taken as a
+// wall at no distance, and with the next voxel up the same wall met a step
+// later, the pixels along every corner went dark, in the gather and in area
+// lights' shadows (docs/quality.md, "Area lights seen by rays"). A voxel
+// holding a thin wall's two sides, or with no normal, keeps the centre's
+// plane, so light does not pass through a thin wall.
+float pixelRayStart(vec3 origin, vec3 p, vec3 n, vec3 d, vec3 inv, int N, out vec3 besideAt, out vec3 besideN) {
+    besideAt = vec3(0.0);
+    besideN = vec3(0.0);
+    ivec3 c = ivec3(floor(origin));
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return 0.0;
+    vec4 r = RAY_RADIANCE(c);
+    if (r.a <= 0.0) return 0.0;
+    uint slot = voxelSlotAt(c);
+    vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+    float behind = sideCodeOfOpacity(r.a) == SIDE_ONE && dot(nc, nc) > 0.25 ? -0.5 : 0.0;
+    if (onOwnSurface(c, nc, p, n) || dot(origin - (vec3(c) + 0.5), nc) <= behind || dot(d, nc) < 0.0) return 0.0;
+    besideAt = vec3(c) + 0.5;
+    besideN = nc;
+    return exitDistance(origin, inv, vec3(c), 1.0) + 1e-3;
+}
+
+// Whether a ray from `offset` voxels off surface point p (voxel units, normal
+// n) along unit d meets no occupied voxel within `reach` voxels of its
+// origin: a pixel's shadow ray, starting and passing surfaces as the
+// pixel's gather rays do.
+bool pixelRayClear(vec3 p, vec3 n, vec3 d, float offset, float reach) {
+    int N = int(grid.dims.x);
+    vec3 origin = p + n * offset, inv = rayInverse(d), seen, besideAt, besideN;
+    uvec4 offsets = rayOccupancyOffsets();
+    float t = pixelRayStart(origin, p, n, d, inv, N, besideAt, besideN);
+    for (int k = 0; k < 4 * N && t < reach; ++k) {
+        if (voxelRayStep(origin, d, inv, t, 1, p, n, besideAt, besideN, N, offsets, false, seen)) {
+            ivec3 c = ivec3(floor(origin + d * t));
+            return any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)));
+        }
+    }
+    return true;
+}
+
 // The per-pixel gather by rays: the mean radiance over `count`
 // cosine-distributed rays about n from surface point p (voxel units), E / pi,
 // and in `occlusion` the mean over the rays of f(r) = 1 / (1 + aoLambda r)
 // where they stop at a surface r voxels away (0 where they leave the grid).
 // The rays start `offset` voxels off p along n; voxels of p's own surface are
 // passed as for a voxel's rays. A ray that starts in another surface's voxel
-// (a floor pixel beside a wall) passes it when it starts in front of that
-// voxel's plane and moves away from it, and otherwise meets it there: a
-// voxel's rays start at its centre, where taking no light is right, but a
-// pixel lies anywhere on its surface, and a band a voxel wide beside every
-// wall went dark.
+// (a floor pixel beside a wall) passes it as pixelRayStart says, and otherwise
+// meets it there: a voxel's rays start at its centre, where taking no light is
+// right, but a pixel lies anywhere on its surface, and a band a voxel wide
+// beside every wall went dark.
 vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float aoLambda, bool backsDark,
                      out float occlusion) {
     int N = int(grid.dims.x);
@@ -224,7 +271,7 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
     vec2 shift = rayShift(seed);
     vec3 origin = p + n * offset;
     uvec4 offsets = rayOccupancyOffsets();
-    vec3 sum = vec3(0.0), d = n, inv = vec3(1.0);
+    vec3 sum = vec3(0.0), d = n, inv = vec3(1.0), besideAt = vec3(0.0), besideN = vec3(0.0);
     occlusion = 0.0;
     float t = 0.0;
     int step = 0;
@@ -234,18 +281,11 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
         if (step == 0) {
             d = cosineRay(shift, ray, tx, b, n);
             inv = rayInverse(d);
-            t = 0.0;
-            ivec3 c = ivec3(floor(origin));
-            if (all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(N))) && RAY_RADIANCE(c).a > 0.0) {
-                uint slot = voxelSlotAt(c);
-                vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
-                if (!onOwnSurface(c, nc, p, n) && dot(origin - (vec3(c) + 0.5), nc) > 0.0 && dot(d, nc) >= 0.0)
-                    t = exitDistance(origin, inv, vec3(c), 1.0) + 1e-3;
-            }
+            t = pixelRayStart(origin, p, n, d, inv, N, besideAt, besideN);
         }
         vec3 seen;
         // Step 1 on: the first voxel met is a hit with its light (or passed in front of).
-        bool ends = voxelRayStep(origin, d, inv, t, 1, p, n, N, offsets, backsDark, seen);
+        bool ends = voxelRayStep(origin, d, inv, t, 1, p, n, besideAt, besideN, N, offsets, backsDark, seen);
         ++step;
         if (ends || step >= 4 * N) {
             sum += seen;

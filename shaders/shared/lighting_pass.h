@@ -22,11 +22,16 @@ DVSGI_CONST(uint, BIND_LIGHT_VOXEL_GRID, 9);         // shadow cones trace the v
 DVSGI_CONST(uint, BIND_LIGHT_VOXEL_RADIANCE, 10);
 DVSGI_CONST(uint, BIND_LIGHT_VOXEL_DIRECTIONAL, 11);  // the six volumes' atlas
 DVSGI_CONST(uint, BIND_LIGHT_OUT_SHADOW, 12);         // mean light visibility
+// The AREA_RAYS variant's rays (lib/voxel_rays.glsl), as the gather's rays bind them.
+DVSGI_CONST(uint, BIND_LIGHT_RAY_SIDES, 13);
+DVSGI_CONST(uint, BIND_LIGHT_RAY_INDEX, 14);
+DVSGI_CONST(uint, BIND_LIGHT_RAY_NORMALS, 15);
+DVSGI_CONST(uint, BIND_LIGHT_RAY_OCCUPANCY, 16);
 
 // Shadow cones and area-light visibility march like the gather's cones.
 struct LightingPush {
     ConeParams cone;  // the shared cone settings (vxgi::gpuCone); trace.z = the longest cone (m)
-    vec4 shadow;      // x 1 = shadow cones instead of maps, y tan(half aperture)
+    vec4 shadow;      // x 1 = shadow cones instead of maps, y tan(half aperture), z area rays' offset (voxels)
 };
 DVSGI_CHECK_SIZE(LightingPush, 48);
 

@@ -8,6 +8,7 @@
 #include "shared/lighting_pass.h"
 #include "shared/voxel_data.h"
 #include "vxgi/cone_settings.h"
+#include "vxgi/bounce.h"
 #include "vxgi/clipmap.h"
 #include "vxgi/volumes.h"
 
@@ -25,6 +26,9 @@ const uint32_t kCompClipmap[] = {
 };
 const uint32_t kCompMapsOnly[] = {
 #include "shaders/lighting_shadow_maps_only.comp.inc"
+};
+const uint32_t kCompAreaRays[] = {
+#include "shaders/lighting_area_rays.comp.inc"
 };
 
 }  // namespace
@@ -51,6 +55,12 @@ LightingPass::LightingPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kComp), layout, "lighting");
     if (clipmap) clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompClipmap), layout, "lighting (clipmap)");
     mapsOnly_ = gpu::Pipeline(ctx, gpu::Spirv(kCompMapsOnly), layout, "lighting (shadow maps only)");
+    gpu::LayoutDesc rays = layout;
+    rays.bindings.push_back({sh::BIND_LIGHT_RAY_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    rays.bindings.push_back({sh::BIND_LIGHT_RAY_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rays.bindings.push_back({sh::BIND_LIGHT_RAY_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    rays.bindings.push_back({sh::BIND_LIGHT_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rays_ = gpu::Pipeline(ctx, gpu::Spirv(kCompAreaRays), rays, "lighting (area rays)");
 }
 
 void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const LightingInputs& in,
@@ -69,14 +79,26 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
     if (in.clip)
         tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
             .image(in.clip->atlases.directional, gpu::use::ComputeRead);
+    const bool rays = in.areaLights && in.rays != nullptr && in.clip == nullptr;
+    if (rays)
+        tracker.image(volumes.sides, gpu::use::ComputeRead)
+            .image(in.rays->normals, gpu::use::ComputeRead)
+            .buffer(volumes.index, gpu::use::BufferComputeRead)
+            .buffer(in.rays->occupancy, gpu::use::BufferComputeRead);
     tracker.image(direct, gpu::use::ComputeWrite, true).image(visibility, gpu::use::ComputeWrite, true).flush(cmd);
     const VkSampler volumeSampler = in.samplers.volume.handle();
     // Cones only where some light needs one; a fitted grid and a clipmap need none alike.
     const bool anyCone = cones.enabled || in.areaLights;
-    const gpu::Pipeline& pipeline = !anyCone ? mapsOnly_ : in.clip ? clipPipeline_ : pipeline_;
+    const gpu::Pipeline& pipeline = !anyCone ? mapsOnly_ : in.clip ? clipPipeline_ : rays ? rays_ : pipeline_;
     gpu::bind(cmd, pipeline);
     const VkSampler point = in.samplers.point.handle();
-    gpu::Descriptors()
+    gpu::Descriptors d;
+    if (rays)
+        d.storageImage(sh::BIND_LIGHT_RAY_SIDES, volumes.sides.view())
+            .storageBuffer(sh::BIND_LIGHT_RAY_INDEX, volumes.index.handle())
+            .storageImage(sh::BIND_LIGHT_RAY_NORMALS, in.rays->normals.view())
+            .storageBuffer(sh::BIND_LIGHT_RAY_OCCUPANCY, in.rays->occupancy.handle());
+    d
         .uniformBuffer(sh::BIND_LIGHT_FRAME, in.frame.handle())
         .sampledImage(sh::BIND_LIGHT_GBUF_BASE, g.base.view(), point)
         .sampledImage(sh::BIND_LIGHT_GBUF_NORMAL, g.normal.view(), point)
@@ -97,7 +119,7 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .push(ctx_, cmd, pipeline);
     const sh::LightingPush push{vxgi::gpuCone(cone, in.clip ? in.clip->coarsest : volumes.grid),
                             glm::vec4(cones.enabled ? 1.0f : 0.0f, std::tan(glm::radians(cones.apertureDegrees * 0.5f)),
-                                      0.0f, 0.0f)};
+                                      in.rayOffsetVoxels, 0.0f)};
     gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     vkCmdDispatch(cmd, gpu::groupCount(direct.desc().extent.width, sh::LIGHTING_GROUP),
                   gpu::groupCount(direct.desc().extent.height, sh::LIGHTING_GROUP), 1);

@@ -14,6 +14,7 @@ class Tracker;
 namespace dvsgi::vxgi {
 class VoxelVolumes;
 struct ClipTrace;
+struct RayData;
 }
 
 namespace dvsgi::render {
@@ -35,7 +36,11 @@ struct LightingInputs {
     const gpu::Buffer& views;
     const vxgi::VoxelVolumes& volumes;  // radiance and directional (shadow cones, area-light visibility)
     const vxgi::ClipTrace* clip = nullptr;  // clipmap levels to trace instead of `volumes`
-    bool areaLights = false;                // `lights` holds LIGHT_AREA patches (their visibility is a cone)
+    bool areaLights = false;                // `lights` holds LIGHT_AREA patches
+    // This frame's voxels' normals and occupancy bits: area lights' visibility
+    // by a ray per patch instead of a cone (a fitted grid's; null: cones).
+    const vxgi::RayData* rays = nullptr;
+    float rayOffsetVoxels = 1.0f;  // the rays' origins off the surface (GatherSettings::rayOffsetVoxels)
 };
 
 class LightingPass {
@@ -50,6 +55,7 @@ public:
 private:
     const gpu::Context& ctx_;
     gpu::Pipeline pipeline_, clipPipeline_;
+    gpu::Pipeline rays_;      // area lights' visibility by rays (AREA_RAYS)
     gpu::Pipeline mapsOnly_;  // no shadow cones, no area lights: the variant without the voxel cones
 };
 

@@ -342,16 +342,22 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     const std::optional<vxgi::ClipTrace> trace =
         clip_.empty() ? std::nullopt
                       : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});
-    const LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
-                             trace ? &*trace : nullptr, patchCount_ > 0};
+    // The rays of area lights' visibility and of the gather read this frame's
+    // voxels' normals and occupancy: packed by a ray bounce since the voxels
+    // changed, or here.
+    const bool areaRays = areaLightRays();
+    if ((areaRays || gatherRays()) && !rayDataCurrent_) {
+        bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
+        rayDataCurrent_ = true;
+    }
+    LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
+                       trace ? &*trace : nullptr, patchCount_ > 0};
+    if (areaRays) {
+        lit.rays = rayData_.get();
+        lit.rayOffsetVoxels = settings_.gather.rayOffsetVoxels;
+    }
     lighting_->record(cmd, tracker_, lit, f.direct, f.visibility, settings_.shadowCones, settings_.cones, t);
     if (voxelizer_) {
-        // The gather's rays read this frame's voxels' normals and occupancy:
-        // packed by a ray bounce since the voxels changed, or here.
-        if (gatherRays() && !rayDataCurrent_) {
-            bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
-            rayDataCurrent_ = true;
-        }
         const GatherInputs in{f.gbuffer, *volumes_, *samplers_, *frame_, trace ? &*trace : nullptr,
                               gatherRays() ? rayData_.get() : nullptr, settings_.voxelLight.backsDark};
         const GatherTargets out{f.diffuse, f.specular, f.reducedTrace() ? &f.traceDiffuse : nullptr,

@@ -75,6 +75,9 @@ struct RenderSettings {
     // pixels, their emission then left out of the cone-gathered radiance.
     bool emitterLights = true;
     uint32_t emitterPatches = 64;
+    // Pixels see each patch by a ray through this frame's voxels (areaLightRays),
+    // else by a cone as wide as the patch looks.
+    bool emitterRays = true;
 };
 
 struct FrameStats {
@@ -155,8 +158,12 @@ public:
     bool bounceRays() const;
     // Whether the per-pixel gather marches rays (gatherTracesRays).
     bool gatherRays() const;
+    // Area lights' visibility at pixels by a ray per patch (a fitted grid's).
+    bool areaLightRays() const;
     // The voxel data per grid voxel (VoxelVolumes::bytesPerGridVoxel, with the rays' results when they run).
-    double voxelBytesPerGridVoxel() const { return volumes_->bytesPerGridVoxel(bounceRays(), gatherRays()); }
+    double voxelBytesPerGridVoxel() const {
+        return volumes_->bytesPerGridVoxel(bounceRays(), gatherRays() || areaLightRays());
+    }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
     std::vector<const vxgi::VoxelVolumes*> levelVolumes() const;
     // --clipmap: what its cones sample (left in gpu::use::ComputeRead after a frame); else null.

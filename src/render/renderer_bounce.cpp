@@ -16,6 +16,11 @@ bool Renderer::bounceRays() const { return bounceTracesRays(settings_); }
 
 bool Renderer::gatherRays() const { return voxelizer_ && gatherTracesRays(settings_); }
 
+bool Renderer::areaLightRays() const {
+    return settings_.emitterRays && voxelizer_ && clip_.empty() && patchCount_ > 0 &&
+           settings_.voxelizer != vxgi::VoxelizerKind::Pv;
+}
+
 // What a bounce's cones trace with --clipmap: the levels through the windows
 // their directional volumes were last filtered in.
 std::optional<vxgi::ClipTrace> Renderer::bounceTrace() const {

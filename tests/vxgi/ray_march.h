@@ -40,8 +40,11 @@ inline bool rayPassesInFront(glm::ivec3 c, glm::vec3 nc, glm::vec3 p, glm::vec3 
 }
 
 // Where a ray starts: a voxel's rays that start inside another surface's voxel
-// meet its back (no light); a pixel's pass that voxel when they start in front
-// of its plane and move away from it, and otherwise meet it.
+// meet its back (no light); a pixel's pass that voxel when they move away from
+// its plane and start in front of it (up to half a voxel behind it for a
+// one-sided voxel with a normal), and otherwise meet it; having passed it they
+// pass that surface's voxels (within a voxel and a half of its plane, facing
+// its way) as their own.
 enum class RayStart { Voxel, Pixel };
 
 // What a ray from p along d (voxel units) meets in `radiance`: `own(c)` says
@@ -66,16 +69,25 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
     }
     float t = 0.0f;  // where the ray entered cell c
     if (tHit) *tHit = INFINITY;
+    glm::vec3 besideAt(0.0f), besideN(0.0f);  // the surface a pixel's ray started beside
+    const auto beside = [&](glm::ivec3 v, glm::vec3 nv) {
+        return std::fabs(glm::dot(glm::vec3(v) + 0.5f - besideAt, besideN)) < 1.5f && glm::dot(nv, besideN) > 0.8f;
+    };
     for (bool first = true;; first = false) {
         for (int a = 0; a < 3; ++a)
             if (c[a] < 0 || c[a] >= n) return glm::vec3(0.0f);
         const glm::vec4 r = radiance.at(c.x, c.y, c.z);
         const int a = tMax.x <= tMax.y && tMax.x <= tMax.z ? 0 : (tMax.y <= tMax.z ? 1 : 2);
-        if (r.a > 0.0f && !own(c)) {
+        if (r.a > 0.0f && !own(c) && !beside(c, normalAt(c))) {
             const glm::vec3 nc = normalAt(c);
             if (tHit) *tHit = t;
             if (first && start == RayStart::Voxel) return glm::vec3(0.0f);
-            const bool leaves = first && glm::dot(p - (glm::vec3(c) + 0.5f), nc) > 0.0f && glm::dot(d, nc) >= 0.0f;
+            const float behind = r.a >= 1.0f && glm::dot(nc, nc) > 0.25f ? -0.5f : 0.0f;
+            const bool leaves = first && glm::dot(p - (glm::vec3(c) + 0.5f), nc) > behind && glm::dot(d, nc) >= 0.0f;
+            if (leaves) {
+                besideAt = glm::vec3(c) + 0.5f;
+                besideN = nc;
+            }
             if (leaves || rayPassesInFront(c, nc, p, d, t, tMax[a])) {
                 if (tHit) *tHit = INFINITY;
             } else {
