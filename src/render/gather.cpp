@@ -37,6 +37,8 @@ const uint32_t kConeResolve[] = {
 const uint32_t kUpsample[] = {
 #include "shaders/upsample.comp.inc"
 };
+const vxgi::RayBindings kRayBindings{sh::BIND_GATHER_RAY_SIDES, sh::BIND_GATHER_RAY_INDEX, sh::BIND_GATHER_RAY_NORMALS,
+                                     sh::BIND_GATHER_RAY_OCCUPANCY};
 
 }  // namespace
 
@@ -59,10 +61,7 @@ GatherPass::GatherPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     gather_ = gpu::Pipeline(ctx, gpu::Spirv(kGather), layout, "cone tracing");
     if (clipmap) clipGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherClipmap), layout, "cone tracing (clipmap)");
     gpu::LayoutDesc rays = layout;
-    rays.bindings.push_back({sh::BIND_GATHER_RAY_SIDES, storage, cs});
-    rays.bindings.push_back({sh::BIND_GATHER_RAY_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
-    rays.bindings.push_back({sh::BIND_GATHER_RAY_NORMALS, storage, cs});
-    rays.bindings.push_back({sh::BIND_GATHER_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    vxgi::addRayBindings(rays, kRayBindings);
     rayGather_ = gpu::Pipeline(ctx, gpu::Spirv(kGatherRays), rays, "cone tracing (rays)");
 
     gpu::LayoutDesc resolve;
@@ -146,11 +145,7 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
         if (in.clip)
             tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
                 .image(in.clip->atlases.directional, gpu::use::ComputeRead);
-        if (rays)
-            tracker.image(v.sides, gpu::use::ComputeRead)
-                .image(in.rays->normals, gpu::use::ComputeRead)
-                .buffer(v.index, gpu::use::BufferComputeRead)
-                .buffer(in.rays->occupancy, gpu::use::BufferComputeRead);
+        if (rays) vxgi::trackRayReads(tracker, v, *in.rays);
         tracker.image(tracedD, gpu::use::ComputeWrite, true).image(outS, gpu::use::ComputeWrite, true).flush(cmd);
         const VkSampler volumeSampler = in.samplers.volume.handle();
         const gpu::Pipeline& pipeline = in.clip ? clipGather_ : rays ? rayGather_ : gather_;
@@ -173,11 +168,7 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
             .sampledImage(sh::BIND_GATHER_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
             .storageImage(sh::BIND_GATHER_OUT_DIFFUSE, tracedD.view())
             .storageImage(sh::BIND_GATHER_OUT_SPECULAR, outS.view());
-        if (rays)
-            d.storageImage(sh::BIND_GATHER_RAY_SIDES, v.sides.view())
-                .storageBuffer(sh::BIND_GATHER_RAY_INDEX, v.index.handle())
-                .storageImage(sh::BIND_GATHER_RAY_NORMALS, in.rays->normals.view())
-                .storageBuffer(sh::BIND_GATHER_RAY_OCCUPANCY, in.rays->occupancy.handle());
+        if (rays) vxgi::bindRays(d, kRayBindings, v, *in.rays);
         d.push(ctx_, cmd, pipeline);
         sh::GatherPush push{};
         // Cones may run as far as the largest grid reaches.

@@ -30,6 +30,8 @@ const uint32_t kCompMapsOnly[] = {
 const uint32_t kCompAreaRays[] = {
 #include "shaders/lighting_area_rays.comp.inc"
 };
+const vxgi::RayBindings kRayBindings{sh::BIND_LIGHT_RAY_SIDES, sh::BIND_LIGHT_RAY_INDEX, sh::BIND_LIGHT_RAY_NORMALS,
+                                     sh::BIND_LIGHT_RAY_OCCUPANCY};
 
 }  // namespace
 
@@ -56,10 +58,7 @@ LightingPass::LightingPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     if (clipmap) clipPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kCompClipmap), layout, "lighting (clipmap)");
     mapsOnly_ = gpu::Pipeline(ctx, gpu::Spirv(kCompMapsOnly), layout, "lighting (shadow maps only)");
     gpu::LayoutDesc rays = layout;
-    rays.bindings.push_back({sh::BIND_LIGHT_RAY_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
-    rays.bindings.push_back({sh::BIND_LIGHT_RAY_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
-    rays.bindings.push_back({sh::BIND_LIGHT_RAY_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
-    rays.bindings.push_back({sh::BIND_LIGHT_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    vxgi::addRayBindings(rays, kRayBindings);
     rays_ = gpu::Pipeline(ctx, gpu::Spirv(kCompAreaRays), rays, "lighting (area rays)");
 }
 
@@ -80,11 +79,7 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         tracker.image(in.clip->atlases.radiance, gpu::use::ComputeRead)
             .image(in.clip->atlases.directional, gpu::use::ComputeRead);
     const bool rays = in.areaLights && in.rays != nullptr && in.clip == nullptr;
-    if (rays)
-        tracker.image(volumes.sides, gpu::use::ComputeRead)
-            .image(in.rays->normals, gpu::use::ComputeRead)
-            .buffer(volumes.index, gpu::use::BufferComputeRead)
-            .buffer(in.rays->occupancy, gpu::use::BufferComputeRead);
+    if (rays) vxgi::trackRayReads(tracker, volumes, *in.rays);
     tracker.image(direct, gpu::use::ComputeWrite, true).image(visibility, gpu::use::ComputeWrite, true).flush(cmd);
     const VkSampler volumeSampler = in.samplers.volume.handle();
     // Cones only where some light needs one; a fitted grid and a clipmap need none alike.
@@ -93,11 +88,7 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
     gpu::bind(cmd, pipeline);
     const VkSampler point = in.samplers.point.handle();
     gpu::Descriptors d;
-    if (rays)
-        d.storageImage(sh::BIND_LIGHT_RAY_SIDES, volumes.sides.view())
-            .storageBuffer(sh::BIND_LIGHT_RAY_INDEX, volumes.index.handle())
-            .storageImage(sh::BIND_LIGHT_RAY_NORMALS, in.rays->normals.view())
-            .storageBuffer(sh::BIND_LIGHT_RAY_OCCUPANCY, in.rays->occupancy.handle());
+    if (rays) vxgi::bindRays(d, kRayBindings, volumes, *in.rays);
     d
         .uniformBuffer(sh::BIND_LIGHT_FRAME, in.frame.handle())
         .sampledImage(sh::BIND_LIGHT_GBUF_BASE, g.base.view(), point)

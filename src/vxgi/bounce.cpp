@@ -78,6 +78,28 @@ VkDeviceSize rayOccupancyBytes(uint32_t n) {
     return VkDeviceSize(sh::rayOccupancyOffset(n, sh::RAY_OCCUPANCY_LEVELS)) * sizeof(uint32_t);
 }
 
+void addRayBindings(gpu::LayoutDesc& layout, const RayBindings& b) {
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    layout.bindings.push_back({b.sides, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    layout.bindings.push_back({b.index, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    layout.bindings.push_back({b.normals, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
+    layout.bindings.push_back({b.occupancy, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+}
+
+void trackRayReads(gpu::Tracker& tracker, const VoxelVolumes& v, const RayData& rays) {
+    tracker.image(v.sides, gpu::use::ComputeRead)
+        .image(rays.normals, gpu::use::ComputeRead)
+        .buffer(v.index, gpu::use::BufferComputeRead)
+        .buffer(rays.occupancy, gpu::use::BufferComputeRead);
+}
+
+void bindRays(gpu::Descriptors& d, const RayBindings& b, const VoxelVolumes& v, const RayData& rays) {
+    d.storageImage(b.sides, v.sides.view())
+        .storageBuffer(b.index, v.index.handle())
+        .storageImage(b.normals, rays.normals.view())
+        .storageBuffer(b.occupancy, rays.occupancy.handle());
+}
+
 BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
     gpu::LayoutDesc layout;

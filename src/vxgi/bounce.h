@@ -53,6 +53,17 @@ struct RayData {
     VkDeviceSize bytes() const { return normals.handle() ? normals.memorySize() + occupancy.size() : 0; }
 };
 
+// What a pass whose pixels walk rays (the gather's, the area lights' in the
+// lighting pass) binds besides the radiance volume, at its own binding
+// numbers: the side light, the slot index, the rays' normals and occupancy bits.
+struct RayBindings {
+    uint32_t sides, index, normals, occupancy;
+};
+void addRayBindings(gpu::LayoutDesc& layout, const RayBindings& b);
+// Declares the four as read by compute (before the caller's flush).
+void trackRayReads(gpu::Tracker& tracker, const VoxelVolumes& v, const RayData& rays);
+void bindRays(gpu::Descriptors& d, const RayBindings& b, const VoxelVolumes& v, const RayData& rays);
+
 class BouncePass {
 public:
     // clipmap: also the pipeline that traces clipmap levels (compiled only when asked for).
