@@ -31,6 +31,14 @@ layout(set = 0, binding = BIND_INJECT_SIDES, rgba32ui) uniform uimage3D sides;
 VOXEL_INDEX_BLOCK(BIND_INJECT_INDEX, readonly);
 VOXEL_LIST_BLOCK(BIND_INJECT_LIST, readonly);
 layout(push_constant) uniform Push { VoxelLightPush pc; };
+#ifdef DVSGI_RAY_OCCUPANCY
+// Built with RAY_OCCUPANCY where this frame's rays' occupancy bits are packed
+// before the voxel light (a fitted grid's): voxel shadow rays cross empty
+// cells in one step, meeting the same voxels.
+#include "shared/bounce_pass.h"
+layout(set = 0, binding = BIND_INJECT_RAY_OCCUPANCY, std430) readonly buffer RayOccupancy { uint rayOccupancy[]; };
+#define VOXEL_TRACE_SKIPS_EMPTY
+#endif
 
 #include "lib/math.glsl"
 #include "lib/voxel_attributes.glsl"
@@ -38,6 +46,9 @@ layout(push_constant) uniform Push { VoxelLightPush pc; };
 #include "lib/voxel_index.glsl"
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
+#ifdef DVSGI_RAY_OCCUPANCY
+#include "lib/voxel_occupancy.glsl"
+#endif
 #include "lib/voxel_trace.glsl"
 #include "lib/voxel_list_dispatch.glsl"
 

@@ -6,10 +6,11 @@
 // `grid`, the radiance volume read through RAY_RADIANCE(c) (by default the
 // storage image `outRadiance`, read only in that pass), the side light
 // `sides`, the packed normals `rayNormals`, the occupancy bits `rayOccupancy`
-// and lib/voxel_index.glsl.
+// (lib/voxel_occupancy.glsl) and lib/voxel_index.glsl.
 #ifndef RAY_RADIANCE
 #define RAY_RADIANCE(c) imageLoad(outRadiance, c)
 #endif
+#include "lib/voxel_occupancy.glsl"
 
 // A normal as the rays keep it per slot (BIND_BOUNCE_RAY_NORMALS): each
 // axis rounded to steps of 1/RAY_NORMAL_SCALE, offset to be unsigned.
@@ -34,30 +35,6 @@ vec3 radianceSeen(uint slot, vec4 r, vec3 d) {
     // Travelling toward -axis a ray meets the +axis side (x, z).
     bool plusSide = d[axis] < 0.0;
     return unpackRgb9e5(plusSide ? t.x : t.y) + unpackRgb9e5(plusSide ? t.z : t.w);
-}
-
-// The bit of the cell of occupancy level `level` that holds voxel v.
-uint rayOccupancyBit(ivec3 v, uint level) {
-    uvec3 c = uvec3(v) >> (level + 1u);
-    uint m = rayOccupancySide(grid.dims.x, level);
-    return c.x + m * (c.y + m * c.z);
-}
-
-// Whether the cell of 2^(level + 1) voxels holding voxel v holds no occupied
-// voxel (BIND_BOUNCE_RAY_OCCUPANCY, set from this frame's voxels; the
-// directional volumes' mips, read before, could still show last frame's).
-// `offset`: rayOccupancyOffset of the level.
-bool cellEmpty(ivec3 v, uint level, uint offset) {
-    uint bit = rayOccupancyBit(v, level);
-    return (rayOccupancy[offset + bit / 32u] & (1u << (bit % 32u))) == 0u;
-}
-
-// The ray parameter where a ray from p along d (1/d = inv) leaves the box
-// [lo, lo + size).
-float exitDistance(vec3 p, vec3 inv, vec3 lo, float size) {
-    vec3 far = lo + step(vec3(0.0), inv) * size;
-    vec3 t = (far - p) * inv;
-    return min(t.x, min(t.y, t.z));
 }
 
 // Whether occupied voxel c (normal nc) belongs to the surface a ray leaving voxel
@@ -107,16 +84,9 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
     seen = vec3(0.0);
     ivec3 c = ivec3(floor(p + d * t));
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return true;
-    float size = 1.0;
-    if (cellEmpty(c, 3u, offsets.w)) {
-        size = 16.0;
-    } else if (cellEmpty(c, 2u, offsets.z)) {
-        size = 8.0;
-    } else if (cellEmpty(c, 1u, offsets.y)) {
-        size = 4.0;
-    } else if (cellEmpty(c, 0u, 0u)) {
-        size = 2.0;
-    } else {
+    float size = emptyCellSize(c, offsets);
+    if (size == 0.0) {
+        size = 1.0;
         vec4 r = RAY_RADIANCE(c);
         if (r.a > 0.0) {
             // Its slot and normal, read once for the rules below.
@@ -152,11 +122,6 @@ vec3 cosineRay(vec2 shift, uint i, vec3 tx, vec3 b, vec3 n) {
 }
 // 1 / d, with axes too near 0 held at 1e7.
 vec3 rayInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7))); }
-// Each coarse level's rayOccupancyOffset (level 0's is 0), as voxelRayStep takes them.
-uvec4 rayOccupancyOffsets() {
-    return uvec4(0u, rayOccupancyOffset(grid.dims.x, 1u), rayOccupancyOffset(grid.dims.x, 2u),
-                 rayOccupancyOffset(grid.dims.x, 3u));
-}
 
 // The mean radiance over `count` cosine-distributed rays about n from voxel
 // v, i.e. E / pi, and in `back` the same over `backCount` rays about -n

@@ -30,6 +30,7 @@ DVSGI_CONST(uint, BIND_INJECT_LIST, 6);  // occupied-voxel list: one invocation 
 DVSGI_CONST(uint, BIND_INJECT_INDEX, 7);  // slot index volume: occupancy for voxel shadow rays
 DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1 (1 - side code * TWO_SIDED_OPACITY_STEP: two-sided)
 DVSGI_CONST(uint, BIND_INJECT_SIDES, 9);  // per-slot side light of two-sided voxels (lib/voxel_sides.glsl)
+DVSGI_CONST(uint, BIND_INJECT_RAY_OCCUPANCY, 10);  // RAY_OCCUPANCY: the rays' occupancy bits (lib/voxel_occupancy.glsl)
 
 DVSGI_END
 

@@ -246,7 +246,7 @@ void Renderer::updateFrameConstants() {
 // bounces of Fixed/Converge; a Feedback frame records its one bounce here.
 void Renderer::recordVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
-    rayDataCurrent_ = false;
+    if (rayData_) rayData_->packed = false;
     if (pv_) {
         recordProgressiveVoxels(cmd);
     } else if (!clip_.empty()) {
@@ -284,9 +284,14 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     const vxgi::BounceMode mode = settings_.voxelLight.bounceMode;
     const bool bounceFollows = !feedback && (mode == vxgi::BounceMode::Converge ||
                                              (mode == vxgi::BounceMode::Fixed && settings_.voxelLight.bounces > 0));
+    // Where rays read the voxels' normals and occupancy bits this frame anyway,
+    // they are packed first, and the voxels' shadow rays (to emitter patches,
+    // --voxel-occlusion raycast) cross empty cells by the bits.
+    const bool packFirst = clip_.empty() && !pv_ && (bounceRays() || gatherRays() || areaLightRays());
+    if (packFirst && !rayData_->packed) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {
-                     inject_->record(cmd, tracker_, v, shadows, light, t);
+                     inject_->record(cmd, tracker_, v, shadows, light, t, packFirst ? &rayData_->occupancy : nullptr);
                      if (feedback) recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, false, blend);
                  },
                  !(bounceFollows && bounceRays()));
@@ -294,7 +299,7 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
 
 void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
     gpu::GpuTimers* t = timers_.get();
-    rayDataCurrent_ = false;
+    if (rayData_) rayData_->packed = false;
     staticLightKept_ = false;
     for (size_t l = 0; l < clip_.size(); ++l) recordClipmapStatic(cmd, l, clip_[l].windowMin);
     if (!clip_.empty()) return;
@@ -346,10 +351,7 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     // voxels' normals and occupancy: packed by a ray bounce since the voxels
     // changed, or here.
     const bool areaRays = areaLightRays();
-    if ((areaRays || gatherRays()) && !rayDataCurrent_) {
-        bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
-        rayDataCurrent_ = true;
-    }
+    if ((areaRays || gatherRays()) && !rayData_->packed) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
     LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
                        trace ? &*trace : nullptr, patchCount_ > 0};
     if (areaRays) {
@@ -521,7 +523,7 @@ bool Renderer::growVoxelSlots() {
     if (!grown) return false;
     bounceStats_.clear();
     staticDirty_ = true;
-    rayDataCurrent_ = false;
+    if (rayData_) rayData_->packed = false;
     haveHistory_ = false;
     dropVoxelHistory();
     return true;

@@ -272,8 +272,7 @@ private:
     std::unique_ptr<vxgi::InjectPass> inject_;
     std::unique_ptr<vxgi::AnisoFilterPass> aniso_;
     std::unique_ptr<vxgi::BouncePass> bounce_;
-    std::unique_ptr<vxgi::RayData> rayData_;  // what the bounce's and the gather's rays read
-    bool rayDataCurrent_ = false;              // rayData_ holds the voxels as they are now (a ray bounce packed them)
+    std::unique_ptr<vxgi::RayData> rayData_;  // what the rays read (the bounce's, the gather's, the patches')
     // --clipmap: one entry per level (level 0's volumes and header are
     // volumes_ and listHeader_); empty for a fitted grid.
     struct ClipLevel {

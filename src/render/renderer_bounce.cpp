@@ -52,7 +52,6 @@ void Renderer::recordLevelBounce(VkCommandBuffer cmd, size_t l, const vxgi::Voxe
     bounce_->record(cmd, tracker_, v, samplers_->volume.handle(), cone, rays, rayData_.get(), vl.backsDark,
                     withStats ? bounceStats_.at(l).get() : nullptr, timers_.get(), trace, uint32_t(l),
                     blend ? &history : nullptr);
-    if (rays > 0) rayDataCurrent_ = true;  // the ray bounce packed this frame's voxels into rayData_
 }
 
 bool Renderer::feedbackFrame() const {

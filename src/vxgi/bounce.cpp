@@ -169,6 +169,7 @@ void BouncePass::recordRayNormals(VkCommandBuffer cmd, gpu::Tracker& tracker, co
         .push(ctx_, cmd, rayNormalsPipeline_);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
     tracker.image(rd.normals, gpu::use::ComputeRead).buffer(rd.occupancy, gpu::use::BufferComputeRead).flush(cmd);
+    rd.packed = true;
 }
 
 void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, VkSampler volumeSampler,
@@ -198,7 +199,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         const gpu::ImageDesc want = tracedImageDesc(v.slots);
         if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) traced_ = gpu::Image(ctx_, want);
         tracker.flush(cmd);
-        recordRayNormals(cmd, tracker, v, *rayData);
+        if (!rayData->packed) recordRayNormals(cmd, tracker, v, *rayData);
         tracker.buffer(v.index, gpu::use::BufferComputeRead);
         // The rays read the radiance and side light that the shading pass after them writes.
         tracker.image(v.radiance, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);

@@ -50,6 +50,10 @@ VkDeviceSize rayOccupancyBytes(uint32_t n);
 struct RayData {
     gpu::Image normals;
     gpu::Buffer occupancy;
+    // Packed from the voxels as they are now: set by recordRayData (and a ray
+    // bounce, which packs them when this is false), cleared by whoever changes
+    // the voxels. Within a frame the voxels do not change between bounces.
+    bool packed = false;
     VkDeviceSize bytes() const { return normals.handle() ? normals.memorySize() + occupancy.size() : 0; }
 };
 

@@ -19,6 +19,9 @@ namespace sh = dvsgi::shader;
 const uint32_t kInject[] = {
 #include "shaders/inject.comp.inc"
 };
+const uint32_t kInjectOccupancy[] = {
+#include "shaders/inject_ray_occupancy.comp.inc"
+};
 
 }  // namespace
 
@@ -38,10 +41,12 @@ InjectPass::InjectPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.pushConstantBytes = sizeof(sh::VoxelLightPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kInject), layout, "voxel inject");
+    layout.bindings.push_back({sh::BIND_INJECT_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    occupancyPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kInjectOccupancy), layout, "voxel inject (occupancy bits)");
 }
 
 void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& v, const ShadowInputs& s,
-                        const VoxelLightSettings& settings, gpu::GpuTimers* timers) const {
+                        const VoxelLightSettings& settings, gpu::GpuTimers* timers, const gpu::Buffer* occupancy) const {
     gpu::GpuTimerScope timer(timers, cmd, "voxel direct light");
     tracker.image(v.accum, gpu::use::ComputeRead)
         .image(s.shadowMap, gpu::use::ShaderRead)
@@ -49,11 +54,14 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
         .image(v.sides, gpu::use::ComputeReadWrite)  // two-sided voxels only
-        .buffer(v.list, gpu::use::IndirectComputeRead)
-        .flush(cmd);
-    gpu::bind(cmd, pipeline_);
-    gpu::Descriptors()
-        .uniformBuffer(sh::BIND_INJECT_GRID, v.gridBuffer.handle())
+        .buffer(v.list, gpu::use::IndirectComputeRead);
+    if (occupancy) tracker.buffer(*occupancy, gpu::use::BufferComputeRead);
+    tracker.flush(cmd);
+    const gpu::Pipeline& pipeline = occupancy ? occupancyPipeline_ : pipeline_;
+    gpu::bind(cmd, pipeline);
+    gpu::Descriptors d;
+    if (occupancy) d.storageBuffer(sh::BIND_INJECT_RAY_OCCUPANCY, occupancy->handle());
+    d.uniformBuffer(sh::BIND_INJECT_GRID, v.gridBuffer.handle())
         .storageImage(sh::BIND_INJECT_ACCUM, v.accum.view())
         .storageBuffer(sh::BIND_INJECT_LIGHTS, s.lights.handle())
         .storageBuffer(sh::BIND_INJECT_SHADOW_VIEWS, s.views.handle())
@@ -63,14 +71,14 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_INJECT_INDEX, v.index.handle())
         .storageImage(sh::BIND_INJECT_OUT_RADIANCE, v.radiance.view())
         .storageImage(sh::BIND_INJECT_SIDES, v.sides.view())
-        .push(ctx_, cmd, pipeline_);
+        .push(ctx_, cmd, pipeline);
     const sh::VoxelLightPush push{
         glm::uvec4(s.lightCount, settings.normalWeighted ? 1u : 0u, uint32_t(settings.occlusion),
                    s.shadowsRendered ? 1u : 0u),
         glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f,
                   settings.keepSideReflection ? 1.0f : 0.0f),
         glm::uvec4(settings.keepStaticRadiance ? 1u : 0u, 0u, 0u, 0u)};
-    gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
+    gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }
 

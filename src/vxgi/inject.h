@@ -30,13 +30,16 @@ class InjectPass {
 public:
     explicit InjectPass(const gpu::Context& ctx);
     // Reads the list, the attributes and the index (voxel shadow rays); writes
-    // `direct` and `radiance` of the listed (occupied) voxels.
+    // `direct` and `radiance` of the listed (occupied) voxels. `occupancy`
+    // (optional): this frame's rays' occupancy bits (RayData::occupancy,
+    // packed), with which voxel shadow rays cross empty cells in one step.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelVolumes& volumes, const ShadowInputs& shadows,
-                const VoxelLightSettings& settings, gpu::GpuTimers* timers) const;
+                const VoxelLightSettings& settings, gpu::GpuTimers* timers,
+                const gpu::Buffer* occupancy = nullptr) const;
 
 private:
     const gpu::Context& ctx_;
-    gpu::Pipeline pipeline_;
+    gpu::Pipeline pipeline_, occupancyPipeline_;
 };
 
 }  // namespace dvsgi::vxgi
