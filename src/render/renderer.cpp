@@ -287,11 +287,11 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     // Where rays read the voxels' normals and occupancy bits this frame anyway,
     // they are packed first, and the voxels' shadow rays (to emitter patches,
     // --voxel-occlusion raycast) cross empty cells by the bits.
-    const bool packFirst = clip_.empty() && !pv_ && (bounceRays() || gatherRays() || areaLightRays());
-    if (packFirst && !rayData_->packed) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
+    packRayData(cmd);
+    const gpu::Buffer* occupancy = raysRead() ? &rayData_->occupancy : nullptr;
     recordLevels(cmd, feedback ? "voxel filtering (bounce)" : "voxel filtering",
                  [&](size_t l, const vxgi::VoxelVolumes& v) {
-                     inject_->record(cmd, tracker_, v, shadows, light, t, packFirst ? &rayData_->occupancy : nullptr);
+                     inject_->record(cmd, tracker_, v, shadows, light, t, occupancy);
                      if (feedback) recordLevelBounce(cmd, l, v, trace ? &*trace : nullptr, false, blend);
                  },
                  !(bounceFollows && bounceRays()));
@@ -347,11 +347,10 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     const std::optional<vxgi::ClipTrace> trace =
         clip_.empty() ? std::nullopt
                       : std::optional<vxgi::ClipTrace>({*coneLevels_, *atlases_, levelVolumes().back()->grid});
-    // The rays of area lights' visibility and of the gather read this frame's
-    // voxels' normals and occupancy: packed by a ray bounce since the voxels
-    // changed, or here.
+    // Packed before the voxel light unless the voxels changed since (a
+    // render's frame after a revoxelization).
+    packRayData(cmd);
     const bool areaRays = areaLightRays();
-    if ((areaRays || gatherRays()) && !rayData_->packed) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, t);
     LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
                        trace ? &*trace : nullptr, patchCount_ > 0};
     if (areaRays) {

@@ -160,9 +160,12 @@ public:
     bool gatherRays() const;
     // Area lights' visibility at pixels by a ray per patch (a fitted grid's).
     bool areaLightRays() const;
+    // Whether any rays (the bounce's, the gather's, the patches') read the
+    // voxels' packed normals and occupancy bits (vxgi::RayData).
+    bool raysRead() const;
     // The voxel data per grid voxel (VoxelVolumes::bytesPerGridVoxel, with the rays' results when they run).
     double voxelBytesPerGridVoxel() const {
-        return volumes_->bytesPerGridVoxel(bounceRays(), gatherRays() || areaLightRays());
+        return volumes_->bytesPerGridVoxel(bounceRays(), raysRead());
     }
     // Every clipmap level's volumes, finest first; the one fitted grid's without --clipmap.
     std::vector<const vxgi::VoxelVolumes*> levelVolumes() const;
@@ -194,6 +197,9 @@ private:
     void updateFrameConstants();
     void uploadLights();
     void recordVoxels(VkCommandBuffer cmd);
+    // Packs the voxels' normals and occupancy bits once per change of the
+    // voxels, where raysRead().
+    void packRayData(VkCommandBuffer cmd);
     void recordStaticVoxels(VkCommandBuffer cmd);
     void recordProgressiveVoxels(VkCommandBuffer cmd);
     void uploadPvViews();

@@ -21,6 +21,12 @@ bool Renderer::areaLightRays() const {
            settings_.voxelizer != vxgi::VoxelizerKind::Pv;
 }
 
+bool Renderer::raysRead() const { return voxelizer_ && (bounceRays() || gatherRays() || areaLightRays()); }
+
+void Renderer::packRayData(VkCommandBuffer cmd) {
+    if (raysRead() && !rayData_->packed) bounce_->recordRayData(cmd, tracker_, *volumes_, *rayData_, timers_.get());
+}
+
 // What a bounce's cones trace with --clipmap: the levels through the windows
 // their directional volumes were last filtered in.
 std::optional<vxgi::ClipTrace> Renderer::bounceTrace() const {
