@@ -97,7 +97,9 @@ std::vector<Setting> conesAndCommands() {
              "2"),
         with(number({"gather-ray-offset", kCones, "V", "voxels",
                      "--gather-trace rays: ray origins move V voxels along the normal (voxels of the pixel's own "
-                     "surface are passed however far)",
+                     "surface are passed however far); the pixels' rays toward emitter patches "
+                     "(--emitter-visibility rays) start there too, so an occluder nearer the surface casts no "
+                     "area-light shadow",
                      kAll, kFrame},
                     0, 8, FIELD(settings.gather.rayOffsetVoxels)),
              "1.5", "voxels in 0..8"),

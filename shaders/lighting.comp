@@ -149,8 +149,9 @@ void main() {
         float vis = 1.0;
 #ifndef DVSGI_SHADOW_MAPS_ONLY
         if (uint(lights[i].position.w) == LIGHT_AREA) {
-            // No shadow map for a patch: a cone as wide as the patch looks
-            // from here, stopping short of the emitter's own voxels.
+            // No shadow map for a patch: a ray through the voxels (AREA_RAYS)
+            // or a cone as wide as the patch looks from here, stopping short
+            // of the emitter's own voxels.
             vis = areaVisibility(P, N, L, dist, sqrt(lights[i].radiant.w), lights[i].direction.xyz);
         } else if (pc.shadow.x > 0.5)
             vis = coneVisibility(P, N, L, dist);

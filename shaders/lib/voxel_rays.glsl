@@ -178,7 +178,11 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
 // that surface's voxels are then passed as the pixel's own (besideAt, besideN;
 // else zero). Where a one-sided surface lies in its voxel is unknown, so a
 // pixel beside it (a corner, a floor under a wall) may start up to half a voxel
-// behind the plane through the voxel's centre: counted as in front. Taken as a
+// behind the plane through the voxel's centre: counted as in front. A voxel
+// whose normal lies along an axis holds every origin within half a voxel of
+// that plane, so for floors and walls the rule is the ray's direction alone:
+// a pixel behind a one-sided wall (outside a room built of single quads),
+// within a voxel of it, sees through it along the wall's normal. Taken as a
 // wall at no distance, and with the next voxel up the same wall met a step
 // later, the pixels along every corner went dark, in the gather and in area
 // lights' shadows (docs/quality.md, "Area lights seen by rays"). A voxel

@@ -7,6 +7,7 @@
 // through that radiance. The irradiance term is E / pi, their mean.
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <glm/gtc/constants.hpp>
 
@@ -22,15 +23,21 @@ namespace dvsgi::test {
 namespace {
 
 constexpr uint32_t kN = 32;
-constexpr float kHalf = 0.71875f;  // walls in the middle of voxel layers 4 and 27 of [-1, 1]^3
 constexpr uint32_t kRays = 16;
 constexpr float kOffset = 1.0f;  // voxels
 
 class GatherRays : public GpuTest {};
 
-TEST_F(GatherRays, MatchTheSameRaysMarchedOnTheCpu) {
+// The box's half size: its walls in the middle of voxel layers 4 and 27 of
+// [-1, 1]^3, or 0.3 of a voxel toward the grid's faces from there. Then the
+// floor pixels nearest a wall start their rays in its voxel behind the plane
+// through the voxel's centre, the case pixelRayStart counts as in front.
+class GatherRaysBox : public GatherRays, public ::testing::WithParamInterface<float> {};
+
+TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
+    const float half = GetParam();
     scene::Scene s;
-    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), kHalf, true);
+    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), half, true);
     addTopDownCamera(s, 0.6f, glm::radians(70.0f));
     render::RenderSettings rs = unitBoxGridSettings(kN, 256);
     rs.width = rs.height = 48;
@@ -52,17 +59,23 @@ TEST_F(GatherRays, MatchTheSameRaysMarchedOnTheCpu) {
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
 
     double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
-    int count = 0;
+    int count = 0, behind = 0;
     for (uint32_t y = 0; y < rs.height; ++y)
         for (uint32_t x = 0; x < rs.width; ++x) {
-            const glm::vec3 world = pixelOnPlane(s, rs, x, y, -kHalf);
+            const glm::vec3 world = pixelOnPlane(s, rs, x, y, -half);
             // The floor up to the walls, whose voxels the rays of the pixels
             // beside them start in (the pixel's rule for such a start).
-            if (std::fabs(world.x) > kHalf - 0.1f * voxel || std::fabs(world.z) > kHalf - 0.1f * voxel) continue;
+            if (std::fabs(world.x) > half - 0.1f * voxel || std::fabs(world.z) > half - 0.1f * voxel) continue;
             const glm::vec3 p = (world + 1.0f) / voxel;
             const auto own = [&](glm::ivec3 c) {
                 return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
             };
+            // Rays starting in a one-sided voxel of another surface, behind its centre's plane.
+            const glm::vec3 origin = p + n * kOffset;
+            const glm::ivec3 c = glm::ivec3(glm::floor(origin));
+            const glm::vec3 nc = normalAt(c);
+            behind += radiance.at(c.x, c.y, c.z).a >= 1.0f && !own(c) && glm::dot(nc, nc) > 0.25f &&
+                      glm::dot(origin - (glm::vec3(c) + 0.5f), nc) < 0.0f;
             const uint32_t seed = shader::rayHash(x | y << 16u);
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
@@ -74,13 +87,22 @@ TEST_F(GatherRays, MatchTheSameRaysMarchedOnTheCpu) {
             worst = std::max(worst, std::fabs(gpu - cpu));
             ++count;
         }
-    std::printf("  %d floor pixels: E/pi GPU %.5f, CPU %.5f (%+.3f%%); worst pixel off by %.4f\n", count,
-                sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
+    std::printf("  %d floor pixels (%d starting behind a wall voxel's centre plane): E/pi GPU %.5f, CPU %.5f "
+                "(%+.3f%%); worst pixel off by %.4f\n",
+                count, behind, sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
     ASSERT_GT(count, 500);
+    if (half > 0.72f) {
+        EXPECT_GT(behind, 20);
+    }
     EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.003);
     // One ray of 16 meeting a wall on one side and not on the other would be 1/16.
     EXPECT_LT(worst, 0.5 / kRays);
 }
+
+INSTANTIATE_TEST_SUITE_P(WallAt, GatherRaysBox, ::testing::Values(0.71875f, 0.7375f),
+                         [](const ::testing::TestParamInfo<float>& i) {
+                             return i.param < 0.72f ? std::string("VoxelCentres") : std::string("OffCentres");
+                         });
 
 // The rays' ambient occlusion, the mean over a pixel's rays of
 // f(r) = 1 / (1 + lambda r) at the distance r (voxels) where each stops, under
