@@ -7,6 +7,7 @@
 // pixel.
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <glm/gtc/constants.hpp>
 
@@ -25,20 +26,39 @@ class AreaRays : public GpuTest {};
 // A 1 m square emitter 1.5 m over a floor, facing it, and a black square beside
 // its axis 0.6 m up, above the camera: the floor gets an umbra, a penumbra and
 // open light, and the emitter's own voxel layer must not shadow it.
-TEST_F(AreaRays, VisibilityMatchesTheSameRaysMarchedOnTheCpu) {
+scene::Scene occludedEmitter() {
     scene::Scene s;
     addQuad(s, addMaterial(s, glm::vec3(0.5f)), glm::vec3(0.0f), 2.0f);  // floor, normal +Y
     addQuad(s, addMaterial(s, glm::vec3(0.0f), glm::vec3(1.0f)), glm::vec3(0.0f, 1.5f, 0.0f), 0.5f,
             glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)));
     addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.3f, 0.6f, 0.3f), 0.3f);
     addTopDownCamera(s, 0.3f, glm::radians(120.0f));
+    return s;
+}
+
+render::RenderSettings areaSettings() {
     render::RenderSettings rs;
     rs.width = rs.height = 32;
     rs.shadowMapSize = 256;
     rs.voxels = 32;
-    rs.outputTerm = shader::TERM_SHADOW;
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = 0;
+    return rs;
+}
+
+// With the gather's and the bounce's cones as well, the area lights' rays are
+// the only reader of the voxels' packed normals and occupancy bits, which
+// must then be packed for them alone.
+class AreaRaysWith : public AreaRays, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(AreaRaysWith, VisibilityMatchesTheSameRaysMarchedOnTheCpu) {
+    const scene::Scene s = occludedEmitter();
+    render::RenderSettings rs = areaSettings();
+    rs.outputTerm = shader::TERM_SHADOW;
+    if (!GetParam()) {
+        rs.gather.trace = render::GatherTrace::Cones;
+        rs.voxelLight.bounceTrace = vxgi::BounceTrace::Cones;
+    }
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     ASSERT_EQ(r.emitterPatchCount(), rs.emitterPatches);
@@ -91,6 +111,44 @@ TEST_F(AreaRays, VisibilityMatchesTheSameRaysMarchedOnTheCpu) {
     ASSERT_GT(pixels - shadowed - open, 50);  // the penumbra
     EXPECT_NEAR(sumGpu / pixels, sumCpu / pixels, 0.002);
     EXPECT_LE(off, pixels / 100);
+}
+
+INSTANTIATE_TEST_SUITE_P(Gather, AreaRaysWith, ::testing::Bool(), [](const ::testing::TestParamInfo<bool>& i) {
+    return i.param ? std::string("RaysEverywhere") : std::string("ConesForTheRest");
+});
+
+// The voxels' shadow rays toward the patches cross the cells the occupancy
+// bits show empty in one step where the bits are packed (inject.comp built
+// with RAY_OCCUPANCY) and half a voxel at a time where no pass reads them
+// (everything by cones): they meet the same voxels, so the voxel light is the
+// same to the bit.
+TEST_F(AreaRays, VoxelLightIsTheSameWithOrWithoutTheOccupancyBits) {
+    const scene::Scene s = occludedEmitter();
+    render::RenderSettings withBits = areaSettings();
+    render::RenderSettings without = withBits;
+    without.gather.trace = render::GatherTrace::Cones;
+    without.voxelLight.bounceTrace = vxgi::BounceTrace::Cones;
+    without.emitterRays = false;
+    const auto voxelLight = [&](const render::RenderSettings& rs) {
+        render::Renderer r(context(), s, rs);
+        r.renderFrame();
+        return readRgba16(r.volumes()->radiance);
+    };
+    const Rgba16Volume a = voxelLight(withBits), b = voxelLight(without);
+    ASSERT_EQ(a.texels.size(), b.texels.size());
+    int occupied = 0, shadowed = 0, lit = 0, differ = 0;
+    for (size_t i = 0; i < a.texels.size(); ++i) {
+        if (a.texels[i].a <= 0.0f) continue;
+        ++occupied;
+        const float y = a.texels[i].g;
+        shadowed += y == 0.0f;
+        lit += y > 0.0f;
+        differ += a.texels[i] != b.texels[i];
+    }
+    std::printf("  %d occupied voxels (%d dark, %d lit), %d differ\n", occupied, shadowed, lit, differ);
+    ASSERT_GT(lit, 100);
+    ASSERT_GT(shadowed, 20);  // the occluder's shadow on the floor and the voxels facing away
+    EXPECT_EQ(differ, 0);
 }
 
 }  // namespace
