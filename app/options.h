@@ -32,6 +32,7 @@ struct RenderOptions {
     bool quiet = false;           // no timing table on stdout
     std::string aovExr;           // multi-layer EXR of every term (--aov); empty = none
     bool exrHalf = false;         // --exr-type half: --out and --aov store HALF samples
+    uint32_t gridSamples = 1;     // renders on sub-voxel shifts of the grid, averaged (--grid-samples)
 
     // Animation and dynamic objects.
     uint32_t frames = 1;          // render frames 0..K-1, write the last (or each: '#' in --out)

@@ -119,29 +119,96 @@ nlohmann::json metricsJson(const RenderOptions& o, const gpu::Context& ctx, cons
     return j;
 }
 
-// Every term of the frame as named layers of one EXR (channel naming of
-// image::ExrLayer). The radiance terms come from re-running the composite, so
-// each equals what `--output <term>` writes.
-void writeAov(const std::string& path, const render::Renderer& renderer, image::PixelType type) {
-    auto layer = [](const char* name, std::vector<std::string> channels, const image::ImageRGBA32F& img) {
-        image::ExrLayer l{name, std::move(channels), {}};
-        const size_t n = l.channels.size();
-        l.pixels.resize(img.pixelCount() * n);
-        for (size_t p = 0; p < img.pixelCount(); ++p)
-            for (size_t c = 0; c < n; ++c) l.pixels[p * n + c] = img.rgba[p * 4 + c];
-        return l;
-    };
-    const render::Renderer::SurfaceImages surface = renderer.readSurface();
-    const std::vector<image::ExrLayer> layers = {
-        layer("direct", {"R", "G", "B"}, renderer.readTerm(shader::TERM_DIRECT)),
-        layer("indirect", {"R", "G", "B"}, renderer.readTerm(shader::TERM_INDIRECT)),
-        layer("specular", {"R", "G", "B"}, renderer.readTerm(shader::TERM_SPECULAR)),
-        layer("ao", {"Y"}, renderer.readTerm(shader::TERM_AO)),
-        layer("albedo", {"R", "G", "B"}, surface.albedo),
-        layer("normal", {"X", "Y", "Z"}, surface.normal),
-        layer("depth", {"Z"}, surface.depth),
-    };
-    image::writeExrLayers(path, surface.depth.width, surface.depth.height, layers, type);
+// One term of the frame for --aov: a layer name, its channels and the image
+// holding them in its first channels.
+struct AovTerm {
+    const char* name;
+    std::vector<std::string> channels;
+    image::ImageRGBA32F image;
+};
+
+// Every term of the frame. The radiance terms come from re-running the
+// composite, so each equals what `--output <term>` writes.
+std::vector<AovTerm> readAov(const render::Renderer& renderer) {
+    render::Renderer::SurfaceImages surface = renderer.readSurface();
+    std::vector<AovTerm> terms;
+    terms.push_back({"direct", {"R", "G", "B"}, renderer.readTerm(shader::TERM_DIRECT)});
+    terms.push_back({"indirect", {"R", "G", "B"}, renderer.readTerm(shader::TERM_INDIRECT)});
+    terms.push_back({"specular", {"R", "G", "B"}, renderer.readTerm(shader::TERM_SPECULAR)});
+    terms.push_back({"ao", {"Y"}, renderer.readTerm(shader::TERM_AO)});
+    terms.push_back({"albedo", {"R", "G", "B"}, std::move(surface.albedo)});
+    terms.push_back({"normal", {"X", "Y", "Z"}, std::move(surface.normal)});
+    terms.push_back({"depth", {"Z"}, std::move(surface.depth)});
+    return terms;
+}
+
+// The terms as named layers of one EXR (channel naming of image::ExrLayer).
+void writeAov(const std::string& path, const std::vector<AovTerm>& terms, image::PixelType type) {
+    std::vector<image::ExrLayer> layers;
+    for (const AovTerm& t : terms) {
+        image::ExrLayer l{t.name, t.channels, {}};
+        const size_t n = l.channels.size(), pixels = t.image.pixelCount();
+        l.pixels.resize(pixels * n);
+        for (size_t p = 0; p < pixels; ++p)
+            for (size_t c = 0; c < n; ++c) l.pixels[p * n + c] = t.image.rgba[p * 4 + c];
+        layers.push_back(std::move(l));
+    }
+    image::writeExrLayers(path, terms.front().image.width, terms.front().image.height, layers, type);
+}
+
+// Where render k of --grid-samples puts the grid, in voxels along each axis
+// from the fitted one: none for the first, then the R3 sequence (steps of the
+// inverse powers of the plastic number, g^4 = g + 1), which spreads any
+// number of points evenly over the cube of offsets.
+glm::vec3 gridSampleOffset(uint32_t k) {
+    constexpr double g = 1.2207440846057594754;
+    const glm::dvec3 step(1.0 / g, 1.0 / (g * g), 1.0 / (g * g * g));
+    return glm::vec3(glm::fract(double(k) * step));
+}
+
+// --grid-samples moves one fitted grid under one still frame.
+void checkGridSamples(const RenderOptions& o) {
+    if (o.gridSamples <= 1) return;
+    const char* why = nullptr;
+    if (o.settings.voxels == 0) why = "--voxels 0 has no grid to move";
+    else if (o.frames > 1) why = "it renders one frame, not --frames";
+    else if (!o.cameraPath.empty()) why = "it renders one frame, not a --camera-path";
+    else if (o.settings.clipmap.levels > 0) why = "--clipmap's grid follows the camera";
+    else if (o.settings.voxelizer == vxgi::VoxelizerKind::Pv) why = "--voxelizer pv keeps voxels from frame to frame";
+    else if (o.settings.view.mode != render::ViewMode::Final) why = "--view voxels:... draws one grid";
+    if (why) throw std::runtime_error(std::string("--grid-samples: ") + why);
+}
+
+void addInto(image::ImageRGBA32F& sum, const image::ImageRGBA32F& img) {
+    for (size_t i = 0; i < sum.rgba.size(); ++i) sum.rgba[i] += img.rgba[i];
+}
+
+// Renders 1..K-1 of --grid-samples, each by a renderer of its own on `fitted`
+// moved by gridSampleOffset(k), added to `img` and `aov` (render 0's), which
+// then hold the mean. Returns the offsets, render 0's first.
+std::vector<glm::vec3> averageGridSamples(gpu::Context& ctx, const scene::Scene& scene, const RenderOptions& o,
+                                          const vxgi::GridSpec& fitted, image::ImageRGBA32F& img,
+                                          std::vector<AovTerm>& aov) {
+    std::vector<glm::vec3> offsets = {gridSampleOffset(0)};
+    for (uint32_t k = 1; k < o.gridSamples; ++k) {
+        offsets.push_back(gridSampleOffset(k));
+        render::RenderSettings s = o.settings;
+        s.hasVoxelBox = true;
+        s.voxelBoxMin = fitted.origin + offsets.back() * fitted.voxelSize;
+        s.voxelBoxMax = s.voxelBoxMin + glm::vec3(float(fitted.n) * fitted.voxelSize);
+        render::Renderer r(ctx, scene, s);
+        r.renderFrame();
+        addInto(img, r.readOutput());
+        if (!aov.empty()) {
+            const std::vector<AovTerm> more = readAov(r);
+            for (size_t t = 0; t < aov.size(); ++t) addInto(aov[t].image, more[t].image);
+        }
+    }
+    const float scale = 1.0f / float(o.gridSamples);
+    for (float& v : img.rgba) v *= scale;
+    for (AovTerm& t : aov)
+        for (float& v : t.image.rgba) v *= scale;
+    return offsets;
 }
 
 
@@ -202,6 +269,7 @@ void checkMetricsPath(const std::string& path) {
 
 int runRender(const RenderOptions& o) {
     checkMetricsPath(o.metricsPath);
+    checkGridSamples(o);
     if (!o.aovExr.empty() && o.settings.view.mode != render::ViewMode::Final)
         throw std::runtime_error("--aov: the terms exist only for the final image, not for --view voxels:...");
     const scene::Scene scene = loadForOptions(o);
@@ -243,6 +311,7 @@ int runRender(const RenderOptions& o) {
     render::FrameStats stats, first;
     glm::dvec3 outputMean(0.0);
     std::string lastExr, lastPng;
+    std::vector<glm::vec3> gridOffsets;
     FrameProgress progress("", o.frames, !o.quiet);
     for (uint32_t frame = 0; frame < o.frames; ++frame) {
         if (moving) renderer.setTime(float(frame) * o.timeStep);
@@ -258,13 +327,20 @@ int runRender(const RenderOptions& o) {
                              stats.bounceChange, o.settings.voxelLight.maxBounces);
         }
         if (!eachFrame && frame + 1 < o.frames) continue;
-        const image::ImageRGBA32F img = renderer.readOutput();
+        image::ImageRGBA32F img = renderer.readOutput();
+        std::vector<AovTerm> aov;
+        if (!o.aovExr.empty()) aov = readAov(renderer);
+        if (o.gridSamples > 1) {
+            gridOffsets = averageGridSamples(ctx, scene, o, renderer.volumes()->grid, img, aov);
+            if (!o.quiet)
+                std::printf("grid samples: the mean of %u renders, the grid moved by up to a voxel\n", o.gridSamples);
+        }
         outputMean = meanRgb(img);
         lastExr = framePath(o.outExr, frame);
         image::ExrOptions exr;
         exr.type = o.exrHalf ? image::PixelType::Half : image::PixelType::Float;
         image::writeExr(lastExr, img, exr);
-        if (!o.aovExr.empty()) writeAov(framePath(o.aovExr, frame), renderer, exr.type);
+        if (!aov.empty()) writeAov(framePath(o.aovExr, frame), aov, exr.type);
         lastPng = pngPathFor(lastExr, o);
         if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
     }
@@ -277,6 +353,8 @@ int runRender(const RenderOptions& o) {
         // (for example across voxel resolutions) without reading the EXR.
         j["output_mean_rgb"] = {outputMean.r, outputMean.g, outputMean.b};
         j["output_mean_luminance"] = 0.2126 * outputMean.r + 0.7152 * outputMean.g + 0.0722 * outputMean.b;
+        // The timings above are render 0's (the fitted grid).
+        for (const glm::vec3& d : gridOffsets) j["grid_sample_offsets"].push_back({d.x, d.y, d.z});
         writeJsonFile(o.metricsPath, j);
     }
     if (!o.quiet) {

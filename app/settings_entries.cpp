@@ -251,6 +251,16 @@ std::vector<Setting> imageAndVoxels() {
                      32, 512, FIELD(settings.voxels), true, true),
              "64"),
         voxelBox(),
+        with(integer({"grid-samples", kVoxels, "K", "",
+                      "render K times, the voxel grid moved each time by a fraction of a voxel along its three "
+                      "axes (the first render on the grid itself, the rest spread over the voxel by an R3 "
+                      "sequence), and write the mean image: where the lattice falls on the scene moves the "
+                      "indirect light much less, at K times the cost (docs/quality.md, \"Where the grid falls\"); "
+                      "one frame of a fitted grid only (not with --frames above 1, --camera-path, --clipmap, "
+                      "--voxelizer pv or --view voxels:...)",
+                      kRender, Apply::Startup},
+                     1, 64, FIELD(gridSamples)),
+             "4"),
         with(integer({"clipmap", kVoxels, "L", "levels",
                       "camera-following voxel clipmap: L levels of N^3 voxels (--voxels), each twice the voxel of "
                       "the one before, centred on the camera; a move voxelizes again only the slabs it exposes "
