@@ -3,49 +3,18 @@
 layers OpenImageIO groups as layers, each term equals what `--output <term>`
 writes, full = direct + indirect + specular, and the G-buffer layers are sane.
 Usage: aov_end_to_end.py path/to/dvsgi"""
-import os, subprocess, sys, tempfile
+import os, sys, tempfile
 
 import numpy as np
-import OpenImageIO as oiio
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from e2e import Runner, read, rgb  # noqa: E402
 
 DVSGI = sys.argv[1]
 TMP = tempfile.mkdtemp(prefix="dvsgi-aov-")
-failures = []
 BASE = ["render", "--width", "32", "--height", "32", "--voxels", "32", "--png", "none", "--quiet", "--validate"]
-
-
-def run(*args):
-    p = subprocess.run([DVSGI, *args], capture_output=True, text=True, timeout=300)
-    return p.returncode, p.stderr
-
-
-def render(name, *extra):
-    rc, err = run(*BASE, *extra)
-    print("%-28s rc=%d %s" % (name, rc, err.strip()))
-    if rc != 0:
-        sys.exit("FAIL %s: rc=%d %s" % (name, rc, err))
-
-
-def read(path):
-    img = oiio.ImageInput.open(path)
-    if img is None:
-        sys.exit("FAIL cannot open %s: %s" % (path, oiio.geterror()))
-    spec = img.spec()
-    px = img.read_image(oiio.FLOAT)
-    formats = [str(f) for f in spec.channelformats] or [str(spec.format)] * spec.nchannels
-    img.close()
-    return {n: px[:, :, i] for i, n in enumerate(spec.channelnames)}, dict(zip(spec.channelnames, formats))
-
-
-def rgb(ch, layer=""):
-    p = layer + "." if layer else ""
-    return np.stack([ch[p + c] for c in "RGB"], axis=-1)
-
-
-def check(cond, what):
-    print("%-6s %s" % ("ok" if cond else "FAIL", what))
-    if not cond:
-        failures.append(what)
+R = Runner(DVSGI, BASE)
+run, render, check = R.run, R.render, R.check
 
 
 aov, full = os.path.join(TMP, "aov.exr"), os.path.join(TMP, "full.exr")
@@ -126,9 +95,8 @@ check(d2.size > 0 and dd < 3.5e-4, "supersampled depth agrees with the 1x depth 
 for name, args, needle in (("bad --exr-type", ["--exr-type", "double"], "--exr-type"),
                            ("--aov not .exr", ["--aov", os.path.join(TMP, "a.png")], "--aov"),
                            ("--aov with a voxel view", ["--aov", aov, "--view", "voxels:albedo"], "--aov")):
-    rc, err = run(*BASE, *args, "--out", os.path.join(TMP, "x.exr"))
+    rc, err = run(*args, "--out", os.path.join(TMP, "x.exr"))
     lines = [l for l in err.splitlines() if l.strip()]
     check(rc != 0 and len(lines) == 1 and needle in lines[0], "%s: one line naming %s (%r)" % (name, needle, err))
 
-print("%d failed" % len(failures))
-sys.exit(1 if failures else 0)
+R.finish()

@@ -4,53 +4,23 @@ the built-in Cornell box whose grids are the fitted one moved by the offsets the
 lists, each rendered here on its own with --voxel-box; the renders differ (the grid did move);
 combinations that have no single fitted grid under one frame are refused in one line.
 Usage: grid_samples_end_to_end.py path/to/dvsgi"""
-import json, os, subprocess, sys, tempfile
+import json, os, sys, tempfile
 
 import numpy as np
-import OpenImageIO as oiio
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from e2e import Runner, read, rgb  # noqa: E402
 
 DVSGI = sys.argv[1]
 TMP = tempfile.mkdtemp(prefix="dvsgi-grid-samples-")
 N = 32
-BASE = ["render", "--width", "48", "--height", "48", "--voxels", str(N), "--png", "none", "--quiet", "--validate"]
-failures = []
-
-
-def run(*args):
-    p = subprocess.run([DVSGI, *args], capture_output=True, text=True, timeout=300)
-    return p.returncode, p.stderr
-
-
-def render(name, *extra):
-    rc, err = run(*BASE, *extra)
-    print("%-34s rc=%d %s" % (name, rc, err.strip()))
-    if rc != 0:
-        sys.exit("FAIL %s: rc=%d %s" % (name, rc, err))
-
-
-def read(path):
-    img = oiio.ImageInput.open(path)
-    if img is None:
-        sys.exit("FAIL cannot open %s: %s" % (path, oiio.geterror()))
-    names = list(img.spec().channelnames)
-    px = np.asarray(img.read_image(oiio.FLOAT), dtype=np.float64)
-    img.close()
-    return {n: px[:, :, i] for i, n in enumerate(names)}
-
-
-def rgb(ch, layer=""):
-    p = layer + "." if layer else ""
-    return np.stack([ch[p + c] for c in "RGB"], axis=-1)
+R = Runner(DVSGI, ["render", "--width", "48", "--height", "48", "--voxels", str(N), "--png", "none", "--quiet",
+                   "--validate"])
+run, render, check = R.run, R.render, R.check
 
 
 def rel_rmse(a, b):
     return float(np.sqrt(np.mean((a - b) ** 2)) / max(np.sqrt(np.mean(b ** 2)), 1e-30))
-
-
-def check(cond, what):
-    print("%-6s %s" % ("ok" if cond else "FAIL", what))
-    if not cond:
-        failures.append(what)
 
 
 K = 3
@@ -70,15 +40,15 @@ for k, d in enumerate(offsets):
     box = ",".join("%.9g" % v for v in lo + [v + N * size for v in lo])
     one, one_aov = os.path.join(TMP, "k%d.exr" % k), os.path.join(TMP, "k%d-aov.exr" % k)
     render("render %d on its own grid" % k, "--voxel-box=" + box, "--out", one, "--aov", one_aov)
-    images.append(rgb(read(one)))
-    layers.append(read(one_aov))
+    images.append(rgb(read(one)[0]))
+    layers.append(read(one_aov)[0])
 
 # Float atomics in the voxelization may add in another order from process to
 # process: images agree to the suite's usual image tolerance, not bit for bit.
 mean = sum(images) / K
-check(rel_rmse(rgb(read(out)), mean) < 1e-4,
-      "--out is the mean of the %d renders (relative RMSE %.3g)" % (K, rel_rmse(rgb(read(out)), mean)))
-ch = read(aov)
+got = rgb(read(out)[0])
+check(rel_rmse(got, mean) < 1e-4, "--out is the mean of the %d renders (relative RMSE %.3g)" % (K, rel_rmse(got, mean)))
+ch = read(aov)[0]
 for layer in ("direct", "indirect", "specular"):
     want = sum(rgb(l, layer) for l in layers) / K
     check(rel_rmse(rgb(ch, layer), want) < 1e-4, "--aov layer %s is their mean" % layer)
@@ -87,11 +57,9 @@ check(spread > 1e-3, "the renders differ: indirect light %.3g apart (relative RM
 
 for extra, what in ((["--frames", "2"], "--frames"), (["--clipmap", "2"], "--clipmap"), (["--voxels", "0"], "--voxels 0"),
                     (["--voxelizer", "pv"], "--voxelizer pv"), (["--view", "voxels:albedo"], "--view voxels")):
-    rc, err = run(*BASE, "--grid-samples", "2", *extra, "--out", os.path.join(TMP, "refused.exr"))
+    rc, err = run("--grid-samples", "2", *extra, "--out", os.path.join(TMP, "refused.exr"))
     lines = err.strip().splitlines()
     check(rc != 0 and len(lines) == 1 and "--grid-samples" in lines[0],
           "with %s refused in one line (rc=%d): %s" % (what, rc, err.strip()))
 
-if failures:
-    sys.exit("FAIL: %d check(s): %s" % (len(failures), "; ".join(failures)))
-print("all grid-samples checks passed")
+R.finish()
