@@ -104,7 +104,8 @@ Setting number(const Meta& m, double lo, double hi, F ref) {
     s.expected = "a number in " + s.range();
     s.parse = [ref, lo, hi](RenderOptions& o, std::string_view v) {
         const std::optional<float> f = parseFloat(v);
-        if (!f || *f < lo || *f > hi) return false;
+        // In float, as stored: the float nearest 0.00001 lies below the double.
+        if (!f || *f < float(lo) || *f > float(hi)) return false;
         ref(o) = *f;
         return true;
     };

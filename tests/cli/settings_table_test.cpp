@@ -2,6 +2,7 @@
 // command line it generates sets the library's structs, --help and the JSON
 // name every setting, and its 'next frame' / 'new renderer' column agrees
 // with what the renderer itself decides (render::needsNewRenderer).
+#include "settings_kinds.h"
 #include "settings_table.h"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,20 @@ TEST(CliSettingsTable, NamesUniqueHelpAndGroupsPresent) {
         }
     }
     EXPECT_GT(names.size(), 50u);
+}
+
+// --help prints each number's range; both ends, as printed, are accepted
+// (--bounce-convergence 0.00001 was refused: its float is below the double 1e-5).
+TEST(CliSettingsTable, BothEndsOfEveryPrintedRangeAreAccepted) {
+    for (const Setting& s : settingsTable()) {
+        if ((s.kind != Kind::Integer && s.kind != Kind::Number) || s.hi >= 1e6) continue;
+        for (const double end : {s.lo, s.hi}) {
+            if (s.pow2 && (uint64_t(end) & (uint64_t(end) - 1)) != 0) continue;
+            RenderOptions o;
+            const std::string text = table::formatNumber(end);
+            EXPECT_TRUE(s.parse(o, text)) << "--" << s.name << " " << text;
+        }
+    }
 }
 
 TEST(CliSettingsTable, EveryDefaultIsInsideItsRange) {
