@@ -345,9 +345,9 @@ std::vector<Setting> imageAndVoxels() {
         // Voxel light.
         bounces(),
         with(number({"bounce-convergence", kVoxelLight, "C", "",
-                     "converging stops when the light still missing, estimated from how the change sum|dY|/sum Y "
-                     "of voxel luminance shrinks per bounce, is below C, or when the change is down to the RGBA16F "
-                     "rounding noise (5e-4)",
+                     "converging stops when the light still missing, estimated from how the change sum|dY| of "
+                     "voxel luminance over the voxels' reflected light shrinks per bounce, is below C (a fraction "
+                     "of the reflected light)",
                      kAll, kFrame},
                     1e-5, 0.5, FIELD(settings.voxelLight.convergence)),
              "0.01", "a relative change in 0.00001..0.5"),

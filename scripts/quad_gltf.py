@@ -1,6 +1,6 @@
-"""Small glTF scenes of flat quads for the CPU path tracer and dvsgi (scripts/corner-scene.py,
-scripts/slab-scene.py): one mesh, one Lambertian material, and the nodes, cameras and punctual lights
-the caller gives."""
+"""Small glTF scenes of flat quads for the CPU path tracer, Cycles and dvsgi (scripts/corner-scene.py,
+scripts/slab-scene.py, scripts/window-room-scene.py): one mesh, one Lambertian material, and the nodes,
+cameras and punctual lights the caller gives."""
 import json
 import math
 import os
@@ -9,6 +9,17 @@ import struct
 
 def quat_x(angle):
     return [math.sin(angle / 2), 0.0, 0.0, math.cos(angle / 2)]
+
+
+def box_quads(lo, hi):
+    """The six outward-facing quads of the axis-aligned box from corner `lo` to corner `hi`."""
+    (x0, y0, z0), (x1, y1, z1) = lo, hi
+    return [([[x1, y0, z0], [x1, y1, z0], [x1, y1, z1], [x1, y0, z1]], [1, 0, 0]),
+            ([[x0, y0, z0], [x0, y0, z1], [x0, y1, z1], [x0, y1, z0]], [-1, 0, 0]),
+            ([[x0, y1, z0], [x0, y1, z1], [x1, y1, z1], [x1, y1, z0]], [0, 1, 0]),
+            ([[x0, y0, z0], [x1, y0, z0], [x1, y0, z1], [x0, y0, z1]], [0, -1, 0]),
+            ([[x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]], [0, 0, 1]),
+            ([[x0, y0, z0], [x0, y1, z0], [x1, y1, z0], [x1, y0, z0]], [0, 0, -1])]
 
 
 def write_quads(path, quads, albedo, nodes, cameras, lights):
@@ -30,9 +41,12 @@ def write_quads(path, quads, albedo, nodes, cameras, lights):
         "nodes": [{"mesh": 0}] + nodes,
         "cameras": cameras,
         "extensionsUsed": ["KHR_lights_punctual"],
-        "extensions": {"KHR_lights_punctual": {"lights": lights}},
+        "extensions": {"KHR_lights_punctual": {"lights": [dict({"name": "light%d" % i}, **l)
+                                                          for i, l in enumerate(lights)]}},
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2, "material": 0}]}],
-        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": list(albedo) + [1], "metallicFactor": 0}}],
+        # Named: scripts/cycles-reference.py finds materials and lights by name.
+        "materials": [{"name": "surface",
+                       "pbrMetallicRoughness": {"baseColorFactor": list(albedo) + [1], "metallicFactor": 0}}],
         "buffers": [{"uri": os.path.basename(path[:-5]) + ".bin", "byteLength": len(data)}],
         "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": n * 12},
                         {"buffer": 0, "byteOffset": n * 12, "byteLength": n * 12},

@@ -158,10 +158,12 @@ void main() {
 }
 #else
 // `sideChange`: for a two-sided voxel, the convergence statistics of both
-// sides (summed |luminance change| of direct + reflected, and the luminance
-// after), since its radiance texel shows only the darker one; x < 0 otherwise.
-vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
+// sides (summed |luminance change| of direct + reflected, and the reflected
+// luminance after), since its radiance texel shows only the darker one; x < 0
+// otherwise. `reflectedLum`: a one-sided voxel's reflected luminance.
+vec4 bounced(ivec3 v, uint slot, out vec2 sideChange, out float reflectedLum) {
     sideChange = vec2(-1.0);
+    reflectedLum = 0.0;
     vec4 d = imageLoad(direct, slotTexel(slot, 0u));
     uint code = sideCodeOf(d);
     int axis, strong;
@@ -211,9 +213,10 @@ vec4 bounced(ivec3 v, uint slot, out vec2 sideChange) {
         float after0 = luminance(lit0 + side0), after1 = luminance(lit1 + side1);
         sideChange = vec2(abs(after0 - luminance(lit0 + unpackRgb9e5(t.z))) +
                               abs(after1 - luminance(lit1 + unpackRgb9e5(t.w))),
-                          after0 + after1);
+                          luminance(side0) + luminance(side1));
     } else if (code == SIDE_ONE) {
         shown += reflected;
+        reflectedLum = luminance(reflected);
     } else {
         shown = vec3(0.0);
     }
@@ -226,19 +229,27 @@ void main() {
     if (entry < list.header.counts.x && list.entries[entry] != VOXEL_LIST_FREE) {
         ivec3 v = listVoxel(list.entries[entry]);
         vec2 sideChange;
-        vec4 r = bounced(v, entry, sideChange);
+        float reflectedLum;
+        vec4 r = bounced(v, entry, sideChange, reflectedLum);
         if (pc.flags.x != 0u && sideChange.x >= 0.0) {
             change = sideChange;
+            imageStore(outRadiance, v, r);
         } else if (pc.flags.x != 0u && r.a > 0.0) {
 #ifdef DVSGI_CLIPMAP
             vec3 old = texelFetch(levelsBefore, ivec3(v.xy, CONE_FIRST_LEVEL * int(grid.dims.x) + v.z), 0).rgb;
 #else
             vec3 old = imageLoad(outRadiance, v).rgb;
 #endif
-            float before = luminance(old), after = luminance(r.rgb);
-            change = vec2(abs(after - before), after);
+            imageStore(outRadiance, v, r);
+            // As stored (half floats; an invocation reads its own write back),
+            // so that light that no longer changes counts no change: the sum
+            // of direct and reflected light rounded afresh each bounce kept
+            // the change near 2e-4 of the voxels' light in a lit room.
+            float before = luminance(old), after = luminance(imageLoad(outRadiance, v).rgb);
+            change = vec2(abs(after - before), reflectedLum);
+        } else {
+            imageStore(outRadiance, v, r);
         }
-        imageStore(outRadiance, v, r);
     }
     if (pc.flags.x == 0u) return;
     // Tree reduction of the workgroup's sums (all invocations reach the barriers).

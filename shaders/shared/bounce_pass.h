@@ -23,9 +23,9 @@ struct BouncePush {
 DVSGI_CHECK_SIZE(BouncePush, 64);
 
 // What each workgroup (VOXEL_LIST_GROUP list entries) writes when asked, at
-// its flat group index: the sum over its voxels of |luminance change| and of
-// the new luminance (two floats), so the host can tell when bounces have
-// converged. Slots of groups not dispatched are zeroed before.
+// its flat group index: the sums over its voxels of |luminance change| and of
+// the reflected part of the new luminance (two floats), so the host can tell
+// when bounces have converged. Slots of groups not dispatched are zeroed before.
 DVSGI_CONST(uint, BOUNCE_STATS_FLOATS, 2);
 
 DVSGI_CONST(uint, BIND_BOUNCE_ACCUM, 3);

@@ -89,7 +89,7 @@ struct FrameStats {
     std::vector<gpu::TimerResult> passes;
     double gpuMs = 0.0;  // sum of the passes
     uint32_t bounces = 0;         // voxel bounces computed this frame
-    double bounceChange = -1.0;   // relative radiance change of the last bounce (-1: not measured)
+    double bounceChange = -1.0;   // the last bounce's luminance change over the voxels' reflected light (-1: not measured)
     bool converged = false;       // BounceMode::Converge reached its threshold this frame
     // Triangles the raster passes were given after culling per view
     // (gpuscene::visibleDraws): the camera's G-buffer, and all shadow views
@@ -243,7 +243,7 @@ private:
     uint64_t gbufferTriangles_ = 0;  // of the last recordCameraGBuffer
     uint32_t settleFrames() const;       // frames the light takes to settle after a change (renderer_voxel_history.cpp)
     uint32_t lightSettleFrames() const;  // settleFrames(), or 1 before any light to settle
-    double bounceChange() const;
+    double bounceChange() const;  // summed |luminance change| over the voxels' reflected light
     bool feedbackFrame() const;  // from bounceStats_ after a bounce with statistics
     bool growVoxelSlots();       // after a voxelization that ran out of slots: bigger volumes
 

@@ -71,17 +71,17 @@ bool Renderer::feedbackFrame() const {
 }
 
 double Renderer::bounceChange() const {
-    double change = 0.0, total = 0.0;
+    double change = 0.0, reflected = 0.0;
     const std::vector<const vxgi::VoxelVolumes*> levels = levelVolumes();
     for (size_t l = 0; l < bounceStats_.size(); ++l) {
         const float* f = static_cast<const float*>(bounceStats_[l]->mapped());
         const uint32_t count = vxgi::BouncePass::statsFloats(levels[l]->slots);
         for (uint32_t i = 0; i + 1 < count; i += sh::BOUNCE_STATS_FLOATS) {
             change += f[i];
-            total += f[i + 1];
+            reflected += f[i + 1];
         }
     }
-    return total > 0.0 ? change / total : 0.0;
+    return reflected > 0.0 ? change / reflected : 0.0;
 }
 
 }  // namespace dvsgi::render

@@ -43,7 +43,7 @@ struct VoxelLightSettings {
     bool keepStaticRadiance = false;      // the Renderer sets it: a feedback frame's rays read last frame's light
     BounceMode bounceMode = BounceMode::Converge;
     uint32_t bounces = 1;                 // Fixed: bounces per frame (0 = direct only)
-    float convergence = 0.005f;           // Converge: stop when sum|dY| / sum Y over voxels is below this
+    float convergence = 0.005f;           // Converge: stop when the light still missing, over the voxels' reflected light, is below this
     uint32_t maxBounces = 64;             // Converge: give up (and say so) after this many
     // The bounce's cones march with the shared settings but this step factor
     // (bounceCones()): beta = 1 costs half of 0.5 and changes the converged

@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Writes a closed room lit by the sun through one window (docs/quality.md, "A room lit through a
+window"): 4 m x 2.8 m x 5 m inside, walls, floor and ceiling 0.12 m thick, albedo 0.7, a window of
+1.4 m x 1.2 m in the +x wall, a 0.8 m block on the floor, the sun (5 W/m^2) shining in from outside and
+a camera in the far corner. Most of what the camera sees is lit only by bounced light, while the sun
+lights the outside of the room and a patch of the floor directly: the case where a renderer's
+bounces must converge against the indirect light, not against all of it.
+
+    scripts/window-room-scene.py OUT.gltf        (also writes OUT.bin)
+"""
+import math
+import sys
+
+from quad_gltf import box_quads, write_quads
+
+W, H, D, T = 4.0, 2.8, 5.0, 0.12  # inside x in [0, W], y in [0, H], z in [0, D]; wall thickness
+
+
+def look_rotation(forward):
+    """The quaternion turning glTF's camera (looking along -z, y up) to look along `forward`."""
+    yaw = math.atan2(-forward[0], -forward[2])
+    pitch = math.asin(forward[1] / math.sqrt(sum(c * c for c in forward)))
+    sy, cy, sp, cp = math.sin(yaw / 2), math.cos(yaw / 2), math.sin(pitch / 2), math.cos(pitch / 2)
+    return [cy * sp, sy * cp, -sy * sp, cy * cp]  # yaw about y, then pitch about the turned x
+
+
+def direction_rotation(d):
+    """The quaternion turning -z (a glTF light's direction) to the unit vector `d`."""
+    axis = [d[1], -d[0], 0.0]  # (-z) x d
+    s = math.sqrt(sum(c * c for c in axis))
+    angle = math.atan2(s, -d[2])
+    return [a / s * math.sin(angle / 2) for a in axis] + [math.cos(angle / 2)]
+
+
+def write_room(path):
+    quads = []
+    for lo, hi in (([-T, -T, -T], [W + T, 0, D + T]),          # floor
+                   ([-T, H, -T], [W + T, H + T, D + T]),        # ceiling
+                   ([-T, 0, -T], [0, H, D + T]),                # wall x = 0
+                   ([0, 0, -T], [W, H, 0]),                     # wall z = 0
+                   ([0, 0, D], [W, H, D + T]),                  # wall z = D
+                   ([W, 0, -T], [W + T, 0.9, D + T]),           # wall x = W below the window,
+                   ([W, 2.1, -T], [W + T, H, D + T]),           # above it,
+                   ([W, 0.9, -T], [W + T, 2.1, 1.8]),           # and on its two sides
+                   ([W, 0.9, 3.2], [W + T, 2.1, D + T]),
+                   ([1.2, 0, 1.5], [2.0, 0.9, 2.3])):           # the block
+        quads += box_quads(lo, hi)
+    sun = [-0.62, -0.55, 0.12]
+    n = math.sqrt(sum(c * c for c in sun))
+    eye, target = [0.4, 1.6, 4.6], [3.6, 0.9, 1.8]
+    nodes = [{"camera": 0, "translation": eye, "rotation": look_rotation([t - e for t, e in zip(target, eye)])},
+             {"rotation": direction_rotation([c / n for c in sun]), "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+    cameras = [{"type": "perspective", "perspective": {"yfov": 1.1, "aspectRatio": 16 / 9, "znear": 0.05, "zfar": 50}}]
+    write_quads(path, quads, [0.7, 0.7, 0.7], nodes, cameras, [{"type": "directional", "intensity": 5.0}])
+
+
+if __name__ == "__main__":
+    write_room(sys.argv[1])
