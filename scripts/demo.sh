@@ -7,8 +7,8 @@ bash scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DDVSGI_BUILD_TESTS=OFF
 cmake --build build --target dvsgi
 mkdir -p out
-# The defaults' 128^3 voxels: the converged bounces (--bounces auto, 26 of
-# them, over occupied voxels only) take 15-18 s on a 2-core lavapipe
+# The defaults' 128^3 voxels: the converged bounces (--bounces auto, 24 of
+# them, over occupied voxels only) and the image take 13-14 s on a 2-core lavapipe
 # machine (2026-12-06); a GPU does this in milliseconds.
 ./build/dvsgi render --width 512 --height 512 --voxels 128 \
   --out out/cornell.exr --png out/cornell.png --metrics out/cornell-metrics.json
