@@ -11,6 +11,22 @@ def quat_x(angle):
     return [math.sin(angle / 2), 0.0, 0.0, math.cos(angle / 2)]
 
 
+def look_rotation(forward):
+    """The quaternion turning glTF's camera (looking along -z, y up) to look along `forward`."""
+    yaw = math.atan2(-forward[0], -forward[2])
+    pitch = math.asin(forward[1] / math.sqrt(sum(c * c for c in forward)))
+    sy, cy, sp, cp = math.sin(yaw / 2), math.cos(yaw / 2), math.sin(pitch / 2), math.cos(pitch / 2)
+    return [cy * sp, sy * cp, -sy * sp, cy * cp]  # yaw about y, then pitch about the turned x
+
+
+def direction_rotation(d):
+    """The quaternion turning -z (a glTF light's direction) to the unit vector `d`."""
+    axis = [d[1], -d[0], 0.0]  # (-z) x d
+    s = math.sqrt(sum(c * c for c in axis))
+    angle = math.atan2(s, -d[2])
+    return [a / s * math.sin(angle / 2) for a in axis] + [math.cos(angle / 2)]
+
+
 def box_quads(lo, hi):
     """The six outward-facing quads of the axis-aligned box from corner `lo` to corner `hi`."""
     (x0, y0, z0), (x1, y1, z1) = lo, hi

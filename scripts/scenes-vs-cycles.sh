@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# dvsgi on the shared Sponza and Sibenik scenes and on a room lit through a window
-# (scripts/window-room-scene.py) against the Cycles references in
+# dvsgi on the shared Sponza and Sibenik scenes, on a room lit through a window
+# (scripts/window-room-scene.py) and on blocks outdoors (scripts/outdoor-scene.py)
+# against the Cycles references in
 # docs/quality/cycles/ (scripts/cycles-reference.py), split by bounce
 # (scripts/scene-compare.py), and on the Cornell box turned about the vertical,
 # whose path-traced image is the unturned reference (nothing in the scene but the
@@ -30,11 +31,11 @@ table=$out/table.md
   echo "| scene (320x180, ${voxels}³) | direct | indirect | first bounce | later bounces | indirect where no direct light |"
   echo "|---|---|---|---|---|---|"
 } > "$table"
-/usr/bin/python3 scripts/window-room-scene.py "$out/window-room.gltf"
-for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-point window-room; do
+for n in window-room outdoor; do /usr/bin/python3 "scripts/$n-scene.py" "$out/$n.gltf"; done
+for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-point window-room outdoor; do
   n=$(basename "$s")
   scene=$shared/scenes/$s.gltf
-  [ "$n" = window-room ] && scene=$out/window-room.gltf
+  [ -f "$out/$n.gltf" ] && scene=$out/$n.gltf
   common=(render "$scene" --width 320 --height 180 --voxels "$voxels" --png none --quiet "${extra[@]}")
   "$dvsgi" "${common[@]}" --out "$out/$n.exr" --aov "$out/$n-aov.exr" --metrics "$out/$n.json"
   "$dvsgi" "${common[@]}" --bounces 0 --out "$out/$n-first.exr" --aov "$out/$n-first-aov.exr"

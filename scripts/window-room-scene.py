@@ -11,25 +11,9 @@ bounces must converge against the indirect light, not against all of it.
 import math
 import sys
 
-from quad_gltf import box_quads, write_quads
+from quad_gltf import box_quads, direction_rotation, look_rotation, write_quads
 
 W, H, D, T = 4.0, 2.8, 5.0, 0.12  # inside x in [0, W], y in [0, H], z in [0, D]; wall thickness
-
-
-def look_rotation(forward):
-    """The quaternion turning glTF's camera (looking along -z, y up) to look along `forward`."""
-    yaw = math.atan2(-forward[0], -forward[2])
-    pitch = math.asin(forward[1] / math.sqrt(sum(c * c for c in forward)))
-    sy, cy, sp, cp = math.sin(yaw / 2), math.cos(yaw / 2), math.sin(pitch / 2), math.cos(pitch / 2)
-    return [cy * sp, sy * cp, -sy * sp, cy * cp]  # yaw about y, then pitch about the turned x
-
-
-def direction_rotation(d):
-    """The quaternion turning -z (a glTF light's direction) to the unit vector `d`."""
-    axis = [d[1], -d[0], 0.0]  # (-z) x d
-    s = math.sqrt(sum(c * c for c in axis))
-    angle = math.atan2(s, -d[2])
-    return [a / s * math.sin(angle / 2) for a in axis] + [math.cos(angle / 2)]
 
 
 def write_room(path):

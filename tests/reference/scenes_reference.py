@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Scenes other than the upright Cornell box against path-traced truth, with the defaults (64^3):
-- the shared Sponza (sun, point light) and Sibenik scenes and a room lit through a window
-  (scripts/window-room-scene.py) at 320x180 against the Cycles references in docs/quality/cycles/
+- the shared Sponza (sun, point light) and Sibenik scenes, a room lit through a window
+  (scripts/window-room-scene.py) and blocks outdoors (scripts/outdoor-scene.py) at 320x180 against the Cycles references in docs/quality/cycles/
   (scripts/cycles-reference.py): the direct term against the direct-only render and the indirect
   term against converged - direct-only (computed by scripts/scene-compare.py);
 - both Cornell scenes turned 45 degrees about the vertical (scripts/turn-scene.py), 256x256, whose
@@ -45,7 +45,8 @@ def render(scene, out, width, height, *extra):
 SCENES = [("crytek-sponza/sponza-sun", 1.0065, 0.7694),
           ("crytek-sponza/sponza-point", 1.0136, 0.8702),
           ("sibenik/sibenik-point", 1.0077, 0.9002),
-          ("window-room", 1.0001, 0.9408)]
+          ("window-room", 1.0001, 0.9408),
+          ("outdoor", 0.9989, 1.0550)]
 # (name, measured mean-luminance ratio of the scene turned 45 degrees), 256x256, 64^3, defaults.
 TURNED = [("cornell-lights", 1.0202), ("cornell-emissive", 0.9765)]
 
@@ -63,12 +64,14 @@ def check(label, value, measured):
         failures.append("%s: %.4f beyond 1 +- %.4f" % (label, value, bound))
 
 
-window = os.path.join(tmp, "window-room.gltf")
-script("window-room-scene.py", window)
+generated = {}
+for name in ("window-room", "outdoor"):
+    generated[name] = os.path.join(tmp, name + ".gltf")
+    script(name + "-scene.py", generated[name])
 for scene, direct_measured, indirect_measured in SCENES:
     name = os.path.basename(scene)
     aov = os.path.join(tmp, name + "-aov.exr")
-    path = window if scene == "window-room" else os.path.join(shared, "scenes", scene + ".gltf")
+    path = generated.get(scene) or os.path.join(shared, "scenes", scene + ".gltf")
     render(path, os.path.join(tmp, name + ".exr"), 320, 180, "--aov", aov)
     metrics = os.path.join(tmp, name + ".json")
     script("scene-compare.py", os.path.join(refs, name), aov, "--json", metrics)
