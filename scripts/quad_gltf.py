@@ -19,23 +19,28 @@ def look_rotation(forward):
     return [cy * sp, sy * cp, -sy * sp, cy * cp]  # yaw about y, then pitch about the turned x
 
 
+def quat_from_to(a, b):
+    """The rotation taking unit vector a to unit vector b (not opposite)."""
+    axis = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    s = math.sqrt(sum(x * x for x in axis))
+    angle = math.atan2(s, sum(x * y for x, y in zip(a, b)))
+    return [x / s * math.sin(angle / 2) for x in axis] + [math.cos(angle / 2)]
+
+
 def direction_rotation(d):
     """The quaternion turning -z (a glTF light's direction) to the unit vector `d`."""
-    axis = [d[1], -d[0], 0.0]  # (-z) x d
-    s = math.sqrt(sum(c * c for c in axis))
-    angle = math.atan2(s, -d[2])
-    return [a / s * math.sin(angle / 2) for a in axis] + [math.cos(angle / 2)]
+    return quat_from_to([0.0, 0.0, -1.0], d)
 
 
 def box_quads(lo, hi):
     """The six outward-facing quads of the axis-aligned box from corner `lo` to corner `hi`."""
     (x0, y0, z0), (x1, y1, z1) = lo, hi
     return [([[x1, y0, z0], [x1, y1, z0], [x1, y1, z1], [x1, y0, z1]], [1, 0, 0]),
-            ([[x0, y0, z0], [x0, y0, z1], [x0, y1, z1], [x0, y1, z0]], [-1, 0, 0]),
+            ([[x0, y0, z1], [x0, y1, z1], [x0, y1, z0], [x0, y0, z0]], [-1, 0, 0]),
             ([[x0, y1, z0], [x0, y1, z1], [x1, y1, z1], [x1, y1, z0]], [0, 1, 0]),
-            ([[x0, y0, z0], [x1, y0, z0], [x1, y0, z1], [x0, y0, z1]], [0, -1, 0]),
+            ([[x0, y0, z1], [x0, y0, z0], [x1, y0, z0], [x1, y0, z1]], [0, -1, 0]),
             ([[x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]], [0, 0, 1]),
-            ([[x0, y0, z0], [x0, y1, z0], [x1, y1, z0], [x1, y0, z0]], [0, 0, -1])]
+            ([[x1, y0, z0], [x0, y0, z0], [x0, y1, z0], [x1, y1, z0]], [0, 0, -1])]
 
 
 def write_quads(path, quads, albedo, nodes, cameras, lights):

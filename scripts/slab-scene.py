@@ -10,28 +10,9 @@ along (-1, -1, -0.2), a camera 3 m above the ground looking straight down (image
 import math
 import sys
 
-from quad_gltf import quat_x, write_quads
+from quad_gltf import box_quads, quat_from_to, quat_x, write_quads
 
 VOXEL = 4.0 / 64
-
-
-def quat_from_to(a, b):
-    """The rotation taking unit vector a to unit vector b (not opposite)."""
-    axis = [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-    s = math.sqrt(sum(x * x for x in axis))
-    angle = math.atan2(s, sum(x * y for x, y in zip(a, b)))
-    return [x / s * math.sin(angle / 2) for x in axis] + [math.cos(angle / 2)]
-
-
-def box_quads(lo, hi):
-    x0, y0, z0 = lo
-    x1, y1, z1 = hi
-    return [([[x1, y0, z0], [x1, y1, z0], [x1, y1, z1], [x1, y0, z1]], [1, 0, 0]),
-            ([[x0, y0, z1], [x0, y1, z1], [x0, y1, z0], [x0, y0, z0]], [-1, 0, 0]),
-            ([[x0, y1, z0], [x0, y1, z1], [x1, y1, z1], [x1, y1, z0]], [0, 1, 0]),
-            ([[x0, y0, z1], [x0, y0, z0], [x1, y0, z0], [x1, y0, z1]], [0, -1, 0]),
-            ([[x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]], [0, 0, 1]),
-            ([[x1, y0, z0], [x0, y0, z0], [x0, y1, z0], [x1, y1, z0]], [0, 0, -1])]
 
 
 def write_slab(path, offset):

@@ -3,7 +3,7 @@
 (scripts/window-room-scene.py), where the sun lights the outside walls and a patch of the floor
 directly and the camera sees mostly bounced light, `--bounces auto` must come within 1 % of the
 indirect light of 64 bounces (the default threshold leaves about 0.5 % of the voxels' reflected
-light; measured 0.3 % here, and 3.7 % short when the change was measured against all of the voxels'
+light; measured 0.3 % here, and about 4 % short when the change was measured against all of the voxels'
 light), say in the metrics that it converged, and stop well before 64 bounces. And the threshold
 is honoured: a looser one stops sooner, darker.
 Usage: converge_end_to_end.py path/to/dvsgi path/to/scripts"""
