@@ -32,6 +32,13 @@ def direction_rotation(d):
     return quat_from_to([0.0, 0.0, -1.0], d)
 
 
+def camera_and_sun_nodes(eye, target, sun):
+    """Nodes of camera 0 at `eye` looking at `target` and of light 0 shining along `sun` (any length)."""
+    n = math.sqrt(sum(c * c for c in sun))
+    return [{"camera": 0, "translation": list(eye), "rotation": look_rotation([t - e for t, e in zip(target, eye)])},
+            {"rotation": direction_rotation([c / n for c in sun]), "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+
+
 def box_quads(lo, hi):
     """The six outward-facing quads of the axis-aligned box from corner `lo` to corner `hi`."""
     (x0, y0, z0), (x1, y1, z1) = lo, hi

@@ -8,10 +8,9 @@ bounces must converge against the indirect light, not against all of it.
 
     scripts/window-room-scene.py OUT.gltf        (also writes OUT.bin)
 """
-import math
 import sys
 
-from quad_gltf import box_quads, direction_rotation, look_rotation, write_quads
+from quad_gltf import box_quads, camera_and_sun_nodes, write_quads
 
 W, H, D, T = 4.0, 2.8, 5.0, 0.12  # inside x in [0, W], y in [0, H], z in [0, D]; wall thickness
 
@@ -29,11 +28,7 @@ def write_room(path):
                    ([W, 0.9, 3.2], [W + T, 2.1, D + T]),
                    ([1.2, 0, 1.5], [2.0, 0.9, 2.3])):           # the block
         quads += box_quads(lo, hi)
-    sun = [-0.62, -0.55, 0.12]
-    n = math.sqrt(sum(c * c for c in sun))
-    eye, target = [0.4, 1.6, 4.6], [3.6, 0.9, 1.8]
-    nodes = [{"camera": 0, "translation": eye, "rotation": look_rotation([t - e for t, e in zip(target, eye)])},
-             {"rotation": direction_rotation([c / n for c in sun]), "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+    nodes = camera_and_sun_nodes(eye=[0.4, 1.6, 4.6], target=[3.6, 0.9, 1.8], sun=[-0.62, -0.55, 0.12])
     cameras = [{"type": "perspective", "perspective": {"yfov": 1.1, "aspectRatio": 16 / 9, "znear": 0.05, "zfar": 50}}]
     write_quads(path, quads, [0.7, 0.7, 0.7], nodes, cameras, [{"type": "directional", "intensity": 5.0}])
 
