@@ -10,7 +10,10 @@ shared/reference/CONVENTIONS.md describes its references: Lambertian Diffuse BSD
 with baseColorFactor x baseColorTexture (sRGB-decoded), alpha MASK as a cut-out at alphaCutoff,
 one-sided emission unless doubleSided, an ideal sun of strength E, ideal point lights of power 4 pi I,
 black world, a box filter one pixel wide, up to 64 bounces, no clamping, no denoiser, float32 EXR of
-linear radiance. Spot lights are refused (Cycles' spot falloff is not the glTF one).
+linear radiance. Spot lights become point lights of power 4 pi I whose light shader multiplies
+their emission by the glTF falloff t^2, t = clamp((cos theta - cos outer) / max(1e-3, cos inner - cos
+outer), 0, 1), theta measured from the spot's axis, as CONVENTIONS.md's references emulate them
+(Cycles' own spot falloff is not the glTF one).
 --probe replaces the scene's camera by a 180-degree equidistant fisheye at the point (X, Y, Z) of the
 glTF's world, looking along (NX, NY, NZ): what a surface there with that normal sees, for
 scripts/probe-irradiance.py to integrate into its irradiance (with --bounces 0, the first bounce it
@@ -138,6 +141,39 @@ def diffuse_material(mat, gm):
     nt.nodes.remove(principled)
 
 
+def spot_as_point(obj, spot, intensity):
+    """A glTF spot as an ideal point light whose emission a light shader scales by the glTF falloff t^2."""
+    import mathutils
+    bpy.context.view_layer.update()
+    axis = (obj.matrix_world.to_3x3() @ mathutils.Vector((0.0, 0.0, -1.0))).normalized()
+    inner, outer = spot.get("innerConeAngle", 0.0), spot.get("outerConeAngle", math.pi / 4)
+    cos_outer = math.cos(outer)
+    width = max(1e-3, math.cos(inner) - cos_outer)
+    light = obj.data
+    light.type = "POINT"
+    light.energy = 4.0 * math.pi * intensity
+    light.shadow_soft_size = 0.0
+    light.use_nodes = True
+    nodes, links = light.node_tree.nodes, light.node_tree.links
+    emission = next(n for n in nodes if n.type == "EMISSION")
+    geometry = nodes.new("ShaderNodeNewGeometry")
+    dot = nodes.new("ShaderNodeVectorMath")
+    dot.operation = "DOT_PRODUCT"
+    # In a light's shader Incoming is the direction from the light to the point it lights.
+    links.new(geometry.outputs["Incoming"], dot.inputs[0])
+    dot.inputs[1].default_value = axis
+    t = nodes.new("ShaderNodeMapRange")  # (cos - cos outer) / width, clamped to [0, 1]
+    t.clamp = True
+    t.inputs["From Min"].default_value = cos_outer
+    t.inputs["From Max"].default_value = cos_outer + width
+    links.new(dot.outputs["Value"], t.inputs["Value"])
+    square = nodes.new("ShaderNodeMath")
+    square.operation = "MULTIPLY"
+    links.new(t.outputs["Result"], square.inputs[0])
+    links.new(t.outputs["Result"], square.inputs[1])
+    links.new(square.outputs["Value"], emission.inputs["Strength"])
+
+
 def main():
     a = parse_args()
     gltf = load_json(a.scene)
@@ -174,6 +210,8 @@ def main():
         elif gl["type"] == "point":
             obj.data.energy = 4.0 * math.pi * intensity
             obj.data.shadow_soft_size = 0.0
+        elif gl["type"] == "spot":
+            spot_as_point(obj, gl.get("spot", {}), intensity)
         else:
             fail(f"light {obj.data.name}: type {gl['type']} is not supported by this script")
         obj.data.cycles.max_bounces = 1024

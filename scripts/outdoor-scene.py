@@ -9,7 +9,7 @@ fitted grid spreads its voxels over the whole ground (16.8 cm at 128^3).
 """
 import sys
 
-from quad_gltf import box_quads, camera_and_sun_nodes, write_quads
+from quad_gltf import box_quads, camera_and_light_nodes, write_quads
 
 
 def write_outdoor(path):
@@ -17,7 +17,7 @@ def write_outdoor(path):
     for lo, hi in (([-3, 0, -2], [-1, 2.5, 0]), ([0.5, 0, -3], [2.5, 1.2, -1]), ([-0.5, 0, 1], [0.3, 3.5, 1.8]),
                    ([1.5, 1.2, -2.8], [2.2, 1.9, -2.1])):
         quads += box_quads(lo, hi)
-    nodes = camera_and_sun_nodes(eye=[3.5, 2.2, 5.5], target=[-0.3, 0.8, -1.0], sun=[0.5, -0.6, -0.62])
+    nodes = camera_and_light_nodes(eye=[3.5, 2.2, 5.5], target=[-0.3, 0.8, -1.0], light_dir=[0.5, -0.6, -0.62])
     cameras = [{"type": "perspective", "perspective": {"yfov": 0.9, "aspectRatio": 16 / 9, "znear": 0.05, "zfar": 100}}]
     write_quads(path, quads, [0.6, 0.6, 0.6], nodes, cameras, [{"type": "directional", "intensity": 3.0}])
 

@@ -32,11 +32,16 @@ def direction_rotation(d):
     return quat_from_to([0.0, 0.0, -1.0], d)
 
 
-def camera_and_sun_nodes(eye, target, sun):
-    """Nodes of camera 0 at `eye` looking at `target` and of light 0 shining along `sun` (any length)."""
-    n = math.sqrt(sum(c * c for c in sun))
+def camera_and_light_nodes(eye, target, light_dir, light_at=None):
+    """Nodes of camera 0 at `eye` looking at `target` and of light 0 shining along `light_dir` (any
+    length), placed at `light_at` if given (a spot)."""
+    n = math.sqrt(sum(c * c for c in light_dir))
+    light = {"rotation": direction_rotation([c / n for c in light_dir]),
+             "extensions": {"KHR_lights_punctual": {"light": 0}}}
+    if light_at is not None:
+        light["translation"] = list(light_at)
     return [{"camera": 0, "translation": list(eye), "rotation": look_rotation([t - e for t, e in zip(target, eye)])},
-            {"rotation": direction_rotation([c / n for c in sun]), "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+            light]
 
 
 def box_quads(lo, hi):

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# dvsgi on the shared Sponza and Sibenik scenes, on a room lit through a window
-# (scripts/window-room-scene.py) and on blocks outdoors (scripts/outdoor-scene.py)
+# dvsgi on the shared Sponza and Sibenik scenes, on a room lit through a window or
+# by a spot light (scripts/window-room-scene.py [--spot]) and on blocks outdoors
+# (scripts/outdoor-scene.py)
 # against the Cycles references in
 # docs/quality/cycles/ (scripts/cycles-reference.py), split by bounce
 # (scripts/scene-compare.py), and on the Cornell box turned about the vertical,
@@ -32,7 +33,9 @@ table=$out/table.md
   echo "|---|---|---|---|---|---|"
 } > "$table"
 for n in window-room outdoor; do /usr/bin/python3 "scripts/$n-scene.py" "$out/$n.gltf"; done
-for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-point window-room outdoor; do
+/usr/bin/python3 scripts/window-room-scene.py "$out/window-room-spot.gltf" --spot
+for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-point window-room window-room-spot \
+         outdoor; do
   n=$(basename "$s")
   scene=$shared/scenes/$s.gltf
   [ -f "$out/$n.gltf" ] && scene=$out/$n.gltf

@@ -4,18 +4,21 @@ window"): 4 m x 2.8 m x 5 m inside, walls, floor and ceiling 0.12 m thick, albed
 1.4 m x 1.2 m in the +x wall, a 0.8 m block on the floor, the sun (5 W/m^2) shining in from outside and
 a camera in the far corner. Most of what the camera sees is lit only by bounced light, while the sun
 lights the outside of the room and a patch of the floor directly: the case where a renderer's
-bounces must converge against the indirect light, not against all of it.
+bounces must converge against the indirect light, not against all of it. With --spot the sun is
+replaced by a spot light under the ceiling (3 W/sr, cone 20 to 40 degrees) tilted toward the +x
+wall: the room is lit from inside only, by a light type the shared scenes do not have.
 
-    scripts/window-room-scene.py OUT.gltf        (also writes OUT.bin)
+    scripts/window-room-scene.py OUT.gltf [--spot]        (also writes OUT.bin)
 """
+import math
 import sys
 
-from quad_gltf import box_quads, camera_and_sun_nodes, write_quads
+from quad_gltf import box_quads, camera_and_light_nodes, write_quads
 
 W, H, D, T = 4.0, 2.8, 5.0, 0.12  # inside x in [0, W], y in [0, H], z in [0, D]; wall thickness
 
 
-def write_room(path):
+def write_room(path, spot=False):
     quads = []
     for lo, hi in (([-T, -T, -T], [W + T, 0, D + T]),          # floor
                    ([-T, H, -T], [W + T, H + T, D + T]),        # ceiling
@@ -28,10 +31,20 @@ def write_room(path):
                    ([W, 0.9, 3.2], [W + T, 2.1, D + T]),
                    ([1.2, 0, 1.5], [2.0, 0.9, 2.3])):           # the block
         quads += box_quads(lo, hi)
-    nodes = camera_and_sun_nodes(eye=[0.4, 1.6, 4.6], target=[3.6, 0.9, 1.8], sun=[-0.62, -0.55, 0.12])
+    eye, target = [0.4, 1.6, 4.6], [3.6, 0.9, 1.8]
+    if spot:
+        nodes = camera_and_light_nodes(eye, target, light_dir=[0.45, -1.0, -0.2], light_at=[1.8, H - 0.1, 2.8])
+        light = {"type": "spot", "intensity": 3.0,
+                 "spot": {"innerConeAngle": math.radians(20), "outerConeAngle": math.radians(40)}}
+    else:
+        nodes = camera_and_light_nodes(eye, target, light_dir=[-0.62, -0.55, 0.12])
+        light = {"type": "directional", "intensity": 5.0}
     cameras = [{"type": "perspective", "perspective": {"yfov": 1.1, "aspectRatio": 16 / 9, "znear": 0.05, "zfar": 50}}]
-    write_quads(path, quads, [0.7, 0.7, 0.7], nodes, cameras, [{"type": "directional", "intensity": 5.0}])
+    write_quads(path, quads, [0.7, 0.7, 0.7], nodes, cameras, [light])
 
 
 if __name__ == "__main__":
-    write_room(sys.argv[1])
+    if len(sys.argv) not in (2, 3) or (len(sys.argv) == 3 and sys.argv[2] != "--spot"):
+        print(__doc__.strip(), file=sys.stderr)
+        sys.exit(2)
+    write_room(sys.argv[1], spot=len(sys.argv) == 3)

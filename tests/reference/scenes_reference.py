@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Scenes other than the upright Cornell box against path-traced truth, with the defaults (64^3):
-- the shared Sponza (sun, point light) and Sibenik scenes, a room lit through a window
-  (scripts/window-room-scene.py) and blocks outdoors (scripts/outdoor-scene.py) at 320x180 against the Cycles references in docs/quality/cycles/
+- the shared Sponza (sun, point light) and Sibenik scenes, a room lit through a window or by a spot
+  light (scripts/window-room-scene.py [--spot]) and blocks outdoors (scripts/outdoor-scene.py) at
+  320x180 against the Cycles references in docs/quality/cycles/
   (scripts/cycles-reference.py): the direct term against the direct-only render and the indirect
   term against converged - direct-only (computed by scripts/scene-compare.py);
 - both Cornell scenes turned 45 degrees about the vertical (scripts/turn-scene.py), 256x256, whose
@@ -46,6 +47,7 @@ SCENES = [("crytek-sponza/sponza-sun", 1.0065, 0.7694),
           ("crytek-sponza/sponza-point", 1.0136, 0.8702),
           ("sibenik/sibenik-point", 1.0077, 0.9002),
           ("window-room", 1.0001, 0.9382),
+          ("window-room-spot", 0.9997, 0.9439),
           ("outdoor", 0.9989, 1.0523)]
 # (name, measured mean-luminance ratio of the scene turned 45 degrees), 256x256, 64^3, defaults.
 TURNED = [("cornell-lights", 1.0202), ("cornell-emissive", 0.9765)]
@@ -65,9 +67,11 @@ def check(label, value, measured):
 
 
 generated = {}
-for name in ("window-room", "outdoor"):
+for name, generator, args in (("window-room", "window-room-scene.py", []),
+                              ("window-room-spot", "window-room-scene.py", ["--spot"]),
+                              ("outdoor", "outdoor-scene.py", [])):
     generated[name] = os.path.join(tmp, name + ".gltf")
-    script(name + "-scene.py", generated[name])
+    script(generator, generated[name], *args)
 for scene, direct_measured, indirect_measured in SCENES:
     name = os.path.basename(scene)
     aov = os.path.join(tmp, name + "-aov.exr")
