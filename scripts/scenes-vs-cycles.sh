@@ -9,8 +9,8 @@
 # voxel grid's axes moves with the turn).
 #
 #   scripts/scenes-vs-cycles.sh DVSGI OUT_DIR [SHARED_DIR] [-- extra dvsgi options]
-# Writes OUT_DIR/table.md and each render's AOV and JSON. VOXELS (default 128)
-# sets the grid. About 3 minutes on lavapipe.
+# Writes OUT_DIR/table.md, each render's AOV and JSON, and a panel (dvsgi, Cycles,
+# error) per scene. VOXELS (default 128) sets the grid. About 3 minutes on lavapipe.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ $# -ge 2 ] || { echo "usage: scripts/scenes-vs-cycles.sh DVSGI OUT_DIR [SHARED_DIR] [-- options]" >&2; exit 2; }
@@ -44,6 +44,9 @@ for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-poi
   "$dvsgi" "${common[@]}" --bounces 0 --out "$out/$n-first.exr" --aov "$out/$n-first-aov.exr"
   /usr/bin/python3 scripts/scene-compare.py "$refs/$n" "$out/$n-aov.exr" "$out/$n-first-aov.exr" \
       --json "$out/$n-compare.json" --row "$n" >> "$table"
+  # dvsgi | Cycles | signed error, to look at (docs/quality.md shows some).
+  /usr/bin/python3 "$shared/tools/compare.py" "$out/$n.exr" "$refs/$n.exr" --panel-png "$out/panel-$n.png" \
+      --json "$out/$n-image.json" > /dev/null
 done
 # The Cornell box turned about its vertical axis (the camera and lights with it).
 {
