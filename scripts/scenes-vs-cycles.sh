@@ -38,7 +38,7 @@ for s in crytek-sponza/sponza-sun crytek-sponza/sponza-point sibenik/sibenik-poi
          outdoor; do
   n=$(basename "$s")
   scene=$shared/scenes/$s.gltf
-  [ -f "$out/$n.gltf" ] && scene=$out/$n.gltf
+  [ "$s" = "$n" ] && scene=$out/$n.gltf  # generated above (no folder under scenes/)
   common=(render "$scene" --width 320 --height 180 --voxels "$voxels" --png none --quiet "${extra[@]}")
   "$dvsgi" "${common[@]}" --out "$out/$n.exr" --aov "$out/$n-aov.exr" --metrics "$out/$n.json"
   "$dvsgi" "${common[@]}" --bounces 0 --out "$out/$n-first.exr" --aov "$out/$n-first-aov.exr"

@@ -231,25 +231,23 @@ void main() {
         vec2 sideChange;
         float reflectedLum;
         vec4 r = bounced(v, entry, sideChange, reflectedLum);
-        if (pc.flags.x != 0u && sideChange.x >= 0.0) {
-            change = sideChange;
-            imageStore(outRadiance, v, r);
-        } else if (pc.flags.x != 0u && r.a > 0.0) {
+        // A one-sided voxel's change is taken as stored (half floats; an
+        // invocation reads its own write back), so that light that no longer
+        // changes counts no change: the sum of direct and reflected light
+        // rounded afresh each bounce kept the change near 2e-4 of the voxels'
+        // light in a lit room. A two-sided voxel's sides measured theirs.
+        bool measureStored = pc.flags.x != 0u && sideChange.x < 0.0 && r.a > 0.0;
+        vec3 old = vec3(0.0);
 #ifdef DVSGI_CLIPMAP
-            vec3 old = texelFetch(levelsBefore, ivec3(v.xy, CONE_FIRST_LEVEL * int(grid.dims.x) + v.z), 0).rgb;
+        if (measureStored) old = texelFetch(levelsBefore, ivec3(v.xy, CONE_FIRST_LEVEL * int(grid.dims.x) + v.z), 0).rgb;
 #else
-            vec3 old = imageLoad(outRadiance, v).rgb;
+        if (measureStored) old = imageLoad(outRadiance, v).rgb;
 #endif
-            imageStore(outRadiance, v, r);
-            // As stored (half floats; an invocation reads its own write back),
-            // so that light that no longer changes counts no change: the sum
-            // of direct and reflected light rounded afresh each bounce kept
-            // the change near 2e-4 of the voxels' light in a lit room.
-            float before = luminance(old), after = luminance(imageLoad(outRadiance, v).rgb);
-            change = vec2(abs(after - before), reflectedLum);
-        } else {
-            imageStore(outRadiance, v, r);
-        }
+        imageStore(outRadiance, v, r);
+        if (pc.flags.x != 0u && sideChange.x >= 0.0)
+            change = sideChange;
+        else if (measureStored)
+            change = vec2(abs(luminance(imageLoad(outRadiance, v).rgb) - luminance(old)), reflectedLum);
     }
     if (pc.flags.x == 0u) return;
     // Tree reduction of the workgroup's sums (all invocations reach the barriers).
