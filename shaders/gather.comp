@@ -73,11 +73,12 @@ void gatherAt(vec3 P, vec3 N, vec3 V, vec4 base, float roughness, float turn, ou
 #ifdef DVSGI_RAYS
     // The same rays every frame: a still image does not flicker. The resolve's
     // 3x3 tent, run --gather-ray-filter times with wider taps, averages each
-    // pixel's rays with its neighbours' on the same surface.
+    // pixel's rays with its neighbours' on the same surface (gatherRaySeed
+    // spreads them).
     float s = grid.originSize.w;
     uvec2 px = gl_GlobalInvocationID.xy;
     vec3 E = PI * pixelRaysCosine((P - grid.originSize.xyz) / s, N, uintBitsToFloat(pc.rays.y), pc.rays.x,
-                                  rayHash(px.x | px.y << 16u), pc.params.y, pc.rays.z != 0u, occlusion);
+                                  gatherRaySeed(px.x, px.y, pc.rays.x), pc.params.y, pc.rays.z != 0u, occlusion);
 #else
     vec3 E = uint(pc.cone.surface.w) == CONE_SET_16 ? gatherIrradiance16(origin, N, originHeight, pc.cone, pc.params.y, occlusion)
                                        : gatherIrradiance6(origin, N, originHeight, pc.cone, pc.params.y, turn, occlusion);

@@ -91,6 +91,24 @@ DVSGI_FUNCTION uint rayHash(uint x) {
 }
 // Grid voxel v's shift (low 16 bits: u, high: v, in 1/65536).
 DVSGI_FUNCTION uint raySeed(ivec3 v) { return rayHash(uint(v.x) | uint(v.y) << 10u | uint(v.z) << 20u); }
+// The gather's rays (gather.comp's DVSGI_RAYS): trace pixel (x, y)'s shift,
+// as raySeed's. Interleaved: the pixels of each GATHER_RAY_BLOCK^2 block take
+// consecutive runs of `count` points of one R2 sequence, turned per block by
+// a hash, so the neighbours that the resolve's filter averages have rays
+// spread over the whole hemisphere (with a hash per pixel their sets
+// overlapped by chance: the rooms' and the Cornell box's indirect light were
+// 15-28 % noisier, docs/quality.md). Fixed point: uint arithmetic wraps
+// modulo 2^32, which is the sequence's fract.
+DVSGI_CONST(uint, GATHER_RAY_BLOCK, 4u);
+DVSGI_CONST(uint, RAY_R2_U32, 3242174889u);  // RAY_R2_U * 2^32
+DVSGI_CONST(uint, RAY_R2_V32, 2447445414u);  // RAY_R2_V * 2^32
+DVSGI_FUNCTION uint gatherRaySeed(uint x, uint y, uint count) {
+    uint k = x % GATHER_RAY_BLOCK + GATHER_RAY_BLOCK * (y % GATHER_RAY_BLOCK);
+    uint turn = rayHash(x / GATHER_RAY_BLOCK | (y / GATHER_RAY_BLOCK) << 16u);
+    uint u = (turn << 16u) + k * count * RAY_R2_U32;
+    uint v = (turn & 0xffff0000u) + k * count * RAY_R2_V32;
+    return u >> 16u | (v & 0xffff0000u);
+}
 
 // Clipmap: the levels' radiance atlas (vxgi/clipmap.h) as the last filtering
 // left it, read for the change statistics: levels 1.. share one scratch

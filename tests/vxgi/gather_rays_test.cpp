@@ -5,9 +5,11 @@
 // casts (the same directions from the pixel's seed, the same start off the
 // floor, the same rules for the floor's own voxels) walked cell by cell
 // through that radiance. The irradiance term is E / pi, their mean.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/constants.hpp>
 
@@ -27,6 +29,33 @@ constexpr uint32_t kRays = 16;
 constexpr float kOffset = 1.0f;  // voxels
 
 class GatherRays : public GpuTest {};
+
+// The rays of one block of GATHER_RAY_BLOCK^2 trace pixels (gatherRaySeed),
+// as points of the unit square before they are lifted onto the hemisphere:
+// together they are one R2 sequence, so every cell of a grid holding four
+// points on average holds two to six (a hash per pixel, as before, leaves
+// cells empty or with twice as many).
+TEST(GatherRaySeed, ABlockOfPixelsSpreadsItsRaysOverTheSquare) {
+    for (uint32_t count : {16u, 64u})
+        for (glm::uvec2 corner : {glm::uvec2(0, 0), glm::uvec2(4, 8), glm::uvec2(100, 36)}) {
+            const uint32_t side = shader::GATHER_RAY_BLOCK, points = side * side * count;
+            const uint32_t m = uint32_t(std::lround(std::sqrt(points / 4.0)));
+            std::vector<int> cells(size_t(m) * m, 0);
+            for (uint32_t y = 0; y < side; ++y)
+                for (uint32_t x = 0; x < side; ++x) {
+                    const uint32_t seed = shader::gatherRaySeed(corner.x + x, corner.y + y, count);
+                    const glm::vec2 shift(float(seed & 0xffffu) / 65536.0f, float(seed >> 16) / 65536.0f);
+                    for (uint32_t i = 0; i < count; ++i) {
+                        const glm::vec2 u =
+                            glm::fract(shift + float(i) * glm::vec2(shader::RAY_R2_U, shader::RAY_R2_V));
+                        ++cells[size_t(std::min(uint32_t(u.y * m), m - 1)) * m + std::min(uint32_t(u.x * m), m - 1)];
+                    }
+                }
+            const auto [lo, hi] = std::minmax_element(cells.begin(), cells.end());
+            EXPECT_GE(*lo, 2) << count << " rays, block at " << corner.x << "," << corner.y;
+            EXPECT_LE(*hi, 6) << count << " rays, block at " << corner.x << "," << corner.y;
+        }
+}
 
 // The box's half size: its walls in the middle of voxel layers 4 and 27 of
 // [-1, 1]^3, or 0.3 of a voxel toward the grid's faces from there. Then the
@@ -76,7 +105,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             const glm::vec3 nc = normalAt(c);
             behind += radiance.at(c.x, c.y, c.z).a >= 1.0f && !own(c) && glm::dot(nc, nc) > 0.25f &&
                       glm::dot(origin - (glm::vec3(c) + 0.5f), nc) < 0.0f;
-            const uint32_t seed = shader::rayHash(x | y << 16u);
+            const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
                 cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel).r;
@@ -150,7 +179,7 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
                 const auto own = [&](glm::ivec3 c) {
                     return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, up)) < 1.5f && glm::dot(normalAt(c), up) > 0.8f;
                 };
-                const uint32_t seed = shader::rayHash(x | y << 16u);
+                const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
                 double occlusion = 0.0;
                 for (uint32_t i = 0; i < kRays; ++i) {
                     float t = INFINITY;
