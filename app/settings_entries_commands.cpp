@@ -91,7 +91,8 @@ std::vector<Setting> conesAndCommands() {
         with(integer({"gather-ray-filter", kCones, "P", "",
                       "--gather-trace rays with --cone-spin on: the 3x3 tent that averages neighbouring pixels' "
                       "rays runs P times, its taps 1, 2, 4, ... trace pixels apart, each weighing how alike the "
-                      "surfaces are (an a-trous filter that stays on a surface); 1 = the tent alone",
+                      "surfaces are and how far apart (beyond about 4 voxels less and less; an a-trous filter that "
+                      "stays on a surface); 1 = the tent alone",
                       kAll, kFrame},
                      1, 5, FIELD(settings.gather.rayFilterPasses)),
              "2"),
@@ -124,8 +125,9 @@ std::vector<Setting> conesAndCommands() {
              "2", "a number in 0..8 (0 = off)"),
         with(toggle({"cone-spin", kCones, "on|off", "",
                      "turn the six diffuse cones about the normal by a quarter of 72 degrees more in each pixel of "
-                     "a 2x2 block and resolve the turns with a depth- and normal-aware 3x3 tent, so that "
-                     "neighbours sample 24 directions together (off: the paper's fixed set; no effect with --cones 16); "
+                     "a 2x2 block and resolve the turns with a 3x3 tent that keeps to the pixel's plane and normal, "
+                     "so that neighbours sample 24 directions together (off: the paper's fixed set; no effect with "
+                     "--cones 16); "
                      "with --gather-trace rays, the same tent averages neighbouring pixels' rays (off: each "
                      "pixel's own)",
                      kAll, kFrame},

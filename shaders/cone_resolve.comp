@@ -16,7 +16,10 @@
 // left blotches a few trace pixels wide (cornell-lights 0.050 relative RMSE
 // at 512^2, most of it that noise). So the tent runs again with its taps 2,
 // 4, ... pixels apart (an a-trous filter, GatherSettings::rayFilterPasses),
-// each pass weighing the same surface likeness, which keeps it on a surface.
+// each pass weighing the same surface likeness, which keeps it on a surface:
+// the neighbour's distance off the pixel's plane (a depth difference kept a
+// floor seen at a grazing angle from being averaged up the view, and left its
+// noise in streaks) and its world distance against RESOLVE_REACH_VOXELS.
 layout(local_size_x = RESOLVE_GROUP, local_size_y = RESOLVE_GROUP) in;
 
 layout(set = 0, binding = BIND_RESOLVE_FRAME) uniform Frame { FrameConstants frame; };
@@ -37,8 +40,9 @@ void main() {
         imageStore(resolved, p, own);
         return;
     }
-    float z = linearDepth(g);
+    vec3 P = surfacePoint(g);
     vec3 n = texelFetch(gNormal, g, 0).xyz;
+    float reach = RESOLVE_REACH_VOXELS * uintBitsToFloat(pc.step.y);
     vec4 sum = vec4(0.0);
     float wsum = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
@@ -46,8 +50,11 @@ void main() {
             ivec2 q = p + ivec2(dx, dy) * int(pc.step.x);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(uvec2(q), pc.sizes.xy))) continue;
             ivec2 gq = gbufferPixel(q);
-            float dz = abs(linearDepth(gq) - z) / max(z, 1e-6);
-            float w = float((2 - abs(dx)) * (2 - abs(dy))) * surfaceSimilarity(dz, n, texelFetch(gNormal, gq, 0).xyz);
+            vec3 Q = surfacePoint(gq);
+            float dz = planeOffset(Q, P, n);
+            float d = reach > 0.0 ? length(Q - P) / reach : 0.0;
+            float w = float((2 - abs(dx)) * (2 - abs(dy))) * surfaceSimilarity(dz, n, texelFetch(gNormal, gq, 0).xyz) /
+                      (1.0 + d * d);
             sum += w * imageLoad(traced, q);
             wsum += w;
         }

@@ -24,7 +24,7 @@ layout(push_constant) uniform Push { UpsamplePush pc; };
 void main() {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(px), pc.sizes.zw))) return;
-    float z = linearDepth(px);
+    vec3 P = surfacePoint(px);
     vec3 n = texelFetch(gNormal, px, 0).xyz;
     vec2 q = (vec2(px) + 0.5) * vec2(pc.sizes.xy) / vec2(pc.sizes.zw) - 0.5;
     ivec2 q0 = ivec2(floor(q));
@@ -38,7 +38,7 @@ void main() {
             ivec2 l = clamp(q0 + ivec2(i, j), ivec2(0), ivec2(pc.sizes.xy) - 1);
             ivec2 g = gbufferPixel(l);
             float bil = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
-            float dz = abs(linearDepth(g) - z) / max(z, 1e-6);
+            float dz = planeOffset(surfacePoint(g), P, n);
             float similarity = surfaceSimilarity(dz, n, texelFetch(gNormal, g, 0).xyz);
             float w = bil * similarity;
             vec4 d = imageLoad(lowDiffuse, l), s = imageLoad(lowSpecular, l);

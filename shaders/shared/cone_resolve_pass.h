@@ -24,11 +24,18 @@ DVSGI_CONST(uint, BIND_RESOLVE_OUT, 4);     // the same resolved (RGBA16F)
 
 struct ConeResolvePush {
     uvec4 sizes;  // x trace width, y trace height, z G-buffer width, w G-buffer height
-    uvec4 step;   // x: trace pixels between the tent's taps (pass k of the rays' filter: 2^k)
+    // x: trace pixels between the tent's taps (pass k of the rays' filter:
+    // 2^k); y: the voxel edge (float bits, world units) for
+    // RESOLVE_REACH_VOXELS, 0 for the turned cones (no falloff)
+    uvec4 step;
 };
 DVSGI_CHECK_SIZE(ConeResolvePush, 32);
 
 DVSGI_CONST(uint, RESOLVE_GROUP, 8);
+// A neighbour's weight falls as 1 / (1 + (d / (RESOLVE_REACH_VOXELS voxels))^2)
+// with its world distance d: the gather's light varies over a few voxels, and
+// on a floor seen at a grazing angle the widest taps reach metres away.
+DVSGI_CONST(float, RESOLVE_REACH_VOXELS, 4.0f);
 
 DVSGI_END
 

@@ -93,7 +93,8 @@ uint32_t resolvePasses(const GatherSettings& s, bool rays, uint32_t coneSet) {
 }
 
 void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, uint32_t passes,
-                               const gpu::Image& turned, const gpu::Image& resolved, gpu::GpuTimers* timers) const {
+                               bool rays, const gpu::Image& turned, const gpu::Image& resolved,
+                               gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, "cone set resolve");
     const GBuffer& g = in.gbuffer;
     const VkSampler point = in.samplers.point.handle();
@@ -111,7 +112,8 @@ void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const
             .storageImage(sh::BIND_RESOLVE_TRACED, from->view())
             .storageImage(sh::BIND_RESOLVE_OUT, to->view())
             .push(ctx_, cmd, resolve_);
-        const sh::ConeResolvePush push{sizes, glm::uvec4(1u << k, 0u, 0u, 0u)};
+        const float voxel = rays ? in.volumes.grid.voxelSize : 0.0f;
+        const sh::ConeResolvePush push{sizes, glm::uvec4(1u << k, std::bit_cast<uint32_t>(voxel), 0u, 0u)};
         gpu::pushConstants(cmd, resolve_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(width, sh::RESOLVE_GROUP), gpu::groupCount(height, sh::RESOLVE_GROUP), 1);
         from = to;
@@ -180,7 +182,7 @@ void GatherPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gather
         gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(traceWidth, sh::GATHER_GROUP), gpu::groupCount(traceHeight, sh::GATHER_GROUP), 1);
     }
-    if (resolve) recordResolve(cmd, tracker, in, passes, out.turnedDiffuse, outD, timers);
+    if (resolve) recordResolve(cmd, tracker, in, passes, rays, out.turnedDiffuse, outD, timers);
     if (!reduced) return;
     gpu::GpuTimerScope timer(timers, cmd, "upsample");
     const uint32_t width = out.diffuse.desc().extent.width, height = out.diffuse.desc().extent.height;

@@ -90,8 +90,11 @@ public:
 private:
     // The gather's term (trace size) resolved by `passes` runs of the 3x3
     // tent into `resolved`, ping-ponging with `turned`: the gather wrote it
-    // into `turned` if `passes` is odd, else into `resolved`.
-    void recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, uint32_t passes,
+    // into `turned` if `passes` is odd, else into `resolved`. `rays`: the
+    // gather's rays, whose filter also weighs neighbours by world distance
+    // (RESOLVE_REACH_VOXELS); the turned cones' tent must weigh the four
+    // turns alike, so it does not.
+    void recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const GatherInputs& in, uint32_t passes, bool rays,
                        const gpu::Image& turned, const gpu::Image& resolved, gpu::GpuTimers* timers) const;
 
     const gpu::Context& ctx_;

@@ -50,7 +50,15 @@ render::RenderSettings settings(int fixedTurn) {
     return rs;
 }
 
-class ConeSpin : public GpuTest {};
+class ConeSpin : public GpuTest {
+protected:
+    // The voxel edge of the grid the renderer fits to the scene (the resolve's reach is in voxels).
+    float voxelEdge(const scene::Scene& s, const render::RenderSettings& rs) {
+        render::Renderer r(context(), s, rs);
+        r.renderFrame();
+        return r.volumes()->grid.voxelSize;
+    }
+};
 
 TEST_F(ConeSpin, ResolvedTurnsMatchTheFourTurnsInterleavedAndFiltered) {
     const scene::Scene s = wallScene();
@@ -59,10 +67,8 @@ TEST_F(ConeSpin, ResolvedTurnsMatchTheFourTurnsInterleavedAndFiltered) {
     std::array<image::ImageRGBA32F, sh::CONE_SPIN_STEPS> turned;
     for (uint32_t k = 0; k < sh::CONE_SPIN_STEPS; ++k) turned[k] = render(s, settings(int(k)));
 
-    // Each pixel's distance from the camera, as the resolve weighs it.
-    const scene::PlacedCamera cam = scene::placedCameras(s, scene::worldMatrices(s)).at(0);
-    const glm::vec3 eye(cam.world[3]);
-    auto distance = [&](int x, int y) { return glm::length(pixelOnPlane(s, rs, uint32_t(x), uint32_t(y), 0.0f) - eye); };
+    // On the floor every neighbour lies on the pixel's plane, and the turned
+    // cones' resolve does not weigh distance, so the tent alone weighs it.
     auto onFloor = [&](int x, int y) {
         const glm::vec3 p = pixelOnPlane(s, rs, uint32_t(x), uint32_t(y), 0.0f);
         return std::abs(p.x) < 0.9f && std::abs(p.z) < 0.9f;
@@ -77,12 +83,10 @@ TEST_F(ConeSpin, ResolvedTurnsMatchTheFourTurnsInterleavedAndFiltered) {
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) inside = inside && onFloor(x + dx, y + dy);
             if (!inside) continue;
-            const float z = distance(x, y);
             double sum = 0.0, wsum = 0.0;
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
-                    const double dz = std::abs(distance(x + dx, y + dy) - z) / z;
-                    const double w = double((2 - std::abs(dx)) * (2 - std::abs(dy))) / (1.0 + 100.0 * dz);
+                    const double w = double((2 - std::abs(dx)) * (2 - std::abs(dy)));
                     sum += w * interleaved(x + dx, y + dy);
                     wsum += w;
                 }
@@ -122,16 +126,16 @@ TEST_F(ConeSpin, RaysFilteredMatchEachPixelsOwnRaysFilteredOnTheCpu) {
     rs.gather.spin = false;
     const image::ImageRGBA32F own = render(s, rs);
 
-    const scene::PlacedCamera cam = scene::placedCameras(s, scene::worldMatrices(s)).at(0);
-    const glm::vec3 eye(cam.world[3]);
+    const float reach = sh::RESOLVE_REACH_VOXELS * voxelEdge(s, rs);
     const int n = int(kSize);
-    std::vector<double> distance(size_t(n * n)), value(size_t(n * n));
+    std::vector<glm::vec3> point(size_t(n * n));
+    std::vector<double> value(size_t(n * n));
     std::vector<bool> floor(size_t(n * n));
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const glm::vec3 p = pixelOnPlane(s, rs, uint32_t(x), uint32_t(y), 0.0f);
             const size_t i = size_t(y * n + x);
-            distance[i] = glm::length(p - eye);
+            point[i] = p;
             floor[i] = std::abs(p.x) < 0.95f && std::abs(p.z) < 0.95f;
             value[i] = own.at(uint32_t(x), uint32_t(y))[1];
         }
@@ -149,8 +153,9 @@ TEST_F(ConeSpin, RaysFilteredMatchEachPixelsOwnRaysFilteredOnTheCpu) {
                         const int qx = x + dx * step, qy = y + dy * step;
                         if (qx < 0 || qy < 0 || qx >= n || qy >= n || !floor[size_t(qy * n + qx)]) continue;
                         const size_t q = size_t(qy * n + qx);
-                        const double dz = std::abs(distance[q] - distance[i]) / distance[i];
-                        const double w = double((2 - std::abs(dx)) * (2 - std::abs(dy))) / (1.0 + 100.0 * dz);
+                        // On the pixel's plane: the tent and the world distance alone.
+                        const double d = glm::length(point[q] - point[i]) / reach;
+                        const double w = double((2 - std::abs(dx)) * (2 - std::abs(dy))) / (1.0 + d * d);
                         sum += w * value[q];
                         wsum += w;
                     }
