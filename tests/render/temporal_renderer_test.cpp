@@ -169,7 +169,9 @@ TEST_F(TemporalRenderer, SwitchedOffLightLeavesNoGhost) {
 // same frames) within kFollowFrames of the move.
 TEST_F(TemporalRenderer, MovedObjectsLightFollowsWithinAStatedNumberOfFrames) {
     constexpr int kBefore = 22;         // the average reaches alphaMin after 19 frames
-    constexpr int kFollowFrames = 40;   // measured on lavapipe: 30
+    // Measured on lavapipe: 19 (30 before the rays' filter kept to the
+    // pixel's plane, which left the first frame's trail larger, 4.9 % now).
+    constexpr int kFollowFrames = 29;
     scene::Scene s = litBox();
     const int panel = addQuad(s, addMaterial(s, glm::vec3(1.0f), glm::vec3(0.0f), true), glm::vec3(-0.3f, -0.4f, 0.0f),
                               0.3f, glm::angleAxis(glm::half_pi<float>(), glm::vec3(0, 0, 1)));
@@ -209,7 +211,7 @@ TEST_F(TemporalRenderer, MovedObjectsLightFollowsWithinAStatedNumberOfFrames) {
                 "after %zu frame(s)\n",
                 100.0 * before, 100.0 * after.front(), 100.0 * after.back(), after.size());
     EXPECT_LT(before, 0.005);
-    ASSERT_GT(after.front(), 0.05);  // the move does change the picture
+    ASSERT_GT(after.front(), 0.04);  // the move does change the picture, by twice the 2 % to follow
     EXPECT_LE(int(after.size()), kFollowFrames);
 }
 
