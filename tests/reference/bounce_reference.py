@@ -62,11 +62,11 @@ subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(tracer), "corne
 # Bounds: 1.5x the errors measured on lavapipe (docs/quality.md, "One bounce at a time", "A voxel seen
 # from behind" and "Area lights seen by rays"), but no tighter than the tracer's own agreement with dvsgi's
 # direct light (1 %; exact there: both are Lambert with hard shadows). Measured since the gather's rays
-# are spread over each 4x4 block of pixels (2026-12-06, late night; shared/bounce_pass.h's gatherRaySeed):
-# cornell-lights' first bounce +0.7 %, its second bounce with the default rays +0.9 %, with the paper's
-# cones -5.5 %, the lit corner's first bounce +1.1 % (+0.3 % with 1024 rays per pixel: the 16 rays' mean
-# over 64^2 pixels moves by about half a per cent with their pattern); cornell-emissive's direct light on
-# its surfaces -2.0 %, its first bounce -0.6 %, its second +1.0 %. With a hash per pixel before that
+# are spread over each 4x4 block of pixels and their filter keeps to the pixel's plane (2026-12-06, late
+# night): cornell-lights' first bounce +0.5 %, its second bounce with the default rays +1.0 %, with the
+# paper's cones -5.5 %, the lit corner's first bounce +1.0 % (+0.3 % with 1024 rays per pixel: the 16
+# rays' mean over 64^2 pixels moves by about half a per cent with their pattern); cornell-emissive's direct
+# light on its surfaces -2.0 %, its first bounce -0.6 %, its second +1.1 %. With a hash per pixel before that
 # (2026-12-06, evening): +1.0 %, +1.4 %, -5.4 %, +0.1 %; -2.0 % (the patches seen by cones: -3.2 %),
 # +0.9 %, +1.6 %. Before a pixel's rays passed the voxels of a surface they start beside and leave:
 # +0.5 %, +1.1 %, -5.6 % and +1.0 %; since a voxel
@@ -75,9 +75,9 @@ subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(tracer), "corne
 # directBound: the bound on the direct light and the grid it is rendered on (0: no voxels, punctual
 # lights alone); secondBounds: (bound, dvsgi options) per way of tracing the voxel bounce.
 emissive = cornell.replace("cornell-lights", "cornell-emissive")
-cases = [("cornell-lights", cornell, (0.01, 0), 0.0105, [(0.0135, []), (0.0825, ["--bounce-trace", "cones"])], []),
-         ("cornell-emissive", emissive, (0.030, VOXELS), 0.010, [(0.015, [])], ["--pixel-centres"]),
-         ("corner", corner, (0.01, 0), 0.0165, [], [])]
+cases = [("cornell-lights", cornell, (0.01, 0), 0.01, [(0.015, []), (0.0825, ["--bounce-trace", "cones"])], []),
+         ("cornell-emissive", emissive, (0.030, VOXELS), 0.010, [(0.0165, [])], ["--pixel-centres"]),
+         ("corner", corner, (0.01, 0), 0.015, [], [])]
 for name, scene, (directBound, directVoxels), firstBound, secondBounds, traceOptions in cases:
     prefix = os.path.join(tmp, name)
     subprocess.run(["/usr/bin/python3", tracer, scene, prefix, "--size", str(SIZE), "--spp", str(SPP), "--bounces", "2",
