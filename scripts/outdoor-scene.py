@@ -14,7 +14,7 @@ inside their voxels").
 import math
 import sys
 
-from quad_gltf import box_quads, camera_and_light_nodes, write_quads
+from quad_gltf import box_quads, camera_and_light_nodes, quat_x, write_quads
 
 
 def write_outdoor(path, view=None):
@@ -28,8 +28,7 @@ def write_outdoor(path, view=None):
         perspective["aspectRatio"] = 1.0
     elif view == "--from-above":
         # Looking along -y: the camera's -z turned down by a quarter turn about x.
-        nodes[0] = {"camera": 0, "translation": [0.0, 14.0, 0.0],
-                    "rotation": [-math.sin(math.pi / 4), 0.0, 0.0, math.cos(math.pi / 4)]}
+        nodes[0] = {"camera": 0, "translation": [0.0, 14.0, 0.0], "rotation": quat_x(-math.pi / 2)}
         perspective.update(yfov=0.8, aspectRatio=1.0)
     write_quads(path, quads, [0.6, 0.6, 0.6], nodes, [{"type": "perspective", "perspective": perspective}],
                 [{"type": "directional", "intensity": 3.0}])

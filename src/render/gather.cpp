@@ -100,6 +100,8 @@ void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const
     const VkSampler point = in.samplers.point.handle();
     const uint32_t width = turned.desc().extent.width, height = turned.desc().extent.height;
     const glm::uvec4 sizes(width, height, g.depth.desc().extent.width, g.depth.desc().extent.height);
+    // The voxel edge the rays' filter measures its reach in; 0: no reach (the turned cones).
+    const uint32_t reachVoxel = std::bit_cast<uint32_t>(rays ? in.volumes.grid.voxelSize : 0.0f);
     gpu::bind(cmd, resolve_);
     const gpu::Image* from = passes % 2 ? &turned : &resolved;
     for (uint32_t k = 0; k < passes; ++k) {
@@ -112,8 +114,7 @@ void GatherPass::recordResolve(VkCommandBuffer cmd, gpu::Tracker& tracker, const
             .storageImage(sh::BIND_RESOLVE_TRACED, from->view())
             .storageImage(sh::BIND_RESOLVE_OUT, to->view())
             .push(ctx_, cmd, resolve_);
-        const float voxel = rays ? in.volumes.grid.voxelSize : 0.0f;
-        const sh::ConeResolvePush push{sizes, glm::uvec4(1u << k, std::bit_cast<uint32_t>(voxel), 0u, 0u)};
+        const sh::ConeResolvePush push{sizes, glm::uvec4(1u << k, reachVoxel, 0u, 0u)};
         gpu::pushConstants(cmd, resolve_, VK_SHADER_STAGE_COMPUTE_BIT, push);
         vkCmdDispatch(cmd, gpu::groupCount(width, sh::RESOLVE_GROUP), gpu::groupCount(height, sh::RESOLVE_GROUP), 1);
         from = to;

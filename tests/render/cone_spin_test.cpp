@@ -50,15 +50,7 @@ render::RenderSettings settings(int fixedTurn) {
     return rs;
 }
 
-class ConeSpin : public GpuTest {
-protected:
-    // The voxel edge of the grid the renderer fits to the scene (the resolve's reach is in voxels).
-    float voxelEdge(const scene::Scene& s, const render::RenderSettings& rs) {
-        render::Renderer r(context(), s, rs);
-        r.renderFrame();
-        return r.volumes()->grid.voxelSize;
-    }
-};
+class ConeSpin : public GpuTest {};
 
 TEST_F(ConeSpin, ResolvedTurnsMatchTheFourTurnsInterleavedAndFiltered) {
     const scene::Scene s = wallScene();
@@ -122,11 +114,14 @@ TEST_F(ConeSpin, RaysFilteredMatchEachPixelsOwnRaysFilteredOnTheCpu) {
     render::RenderSettings rs = settings(-1);
     rs.gather.trace = render::GatherTrace::Rays;
     rs.gather.rayFilterPasses = 3;
-    const image::ImageRGBA32F filtered = render(s, rs);
+    render::Renderer filteredRenderer(context(), s, rs);
+    filteredRenderer.renderFrame();
+    const image::ImageRGBA32F filtered = filteredRenderer.readOutput();
+    // The resolve's reach is in voxels of the grid the renderer fitted to the scene.
+    const float reach = sh::RESOLVE_REACH_VOXELS * filteredRenderer.volumes()->grid.voxelSize;
     rs.gather.spin = false;
     const image::ImageRGBA32F own = render(s, rs);
 
-    const float reach = sh::RESOLVE_REACH_VOXELS * voxelEdge(s, rs);
     const int n = int(kSize);
     std::vector<glm::vec3> point(size_t(n * n));
     std::vector<double> value(size_t(n * n));
