@@ -31,6 +31,7 @@ struct RenderOptions {
     bool validate = false;        // Khronos validation layer
     bool quiet = false;           // no timing table on stdout
     std::string aovExr;           // multi-layer EXR of every term (--aov); empty = none
+    std::string voxelDump;        // .npy table of the fitted grid's voxels (--voxel-dump); empty = none
     bool exrHalf = false;         // --exr-type half: --out and --aov store HALF samples
     uint32_t gridSamples = 1;     // renders on sub-voxel shifts of the grid, averaged (--grid-samples)
 

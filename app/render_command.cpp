@@ -15,6 +15,7 @@
 #include "scene/load.h"
 #include "settings_table.h"
 #include "shared/composite_pass.h"
+#include "voxel_dump.h"
 #include "vxgi/volumes.h"
 #include "vxgi/voxelize.h"
 
@@ -267,9 +268,20 @@ void checkMetricsPath(const std::string& path) {
                              (ec ? ec.message() : "not a directory"));
 }
 
+// --voxel-dump writes the one fitted grid of one render.
+void checkVoxelDump(const RenderOptions& o) {
+    if (o.voxelDump.empty()) return;
+    if (o.settings.voxels == 0) throw std::runtime_error("--voxel-dump: there are no voxels with --voxels 0");
+    if (o.settings.clipmap.levels > 0)
+        throw std::runtime_error("--voxel-dump: writes the fitted grid's voxels, not --clipmap levels");
+    if (o.gridSamples > 1)
+        throw std::runtime_error("--voxel-dump: writes one render's voxels, not the --grid-samples mean");
+}
+
 int runRender(const RenderOptions& o) {
     checkMetricsPath(o.metricsPath);
     checkGridSamples(o);
+    checkVoxelDump(o);
     if (!o.aovExr.empty() && o.settings.view.mode != render::ViewMode::Final)
         throw std::runtime_error("--aov: the terms exist only for the final image, not for --view voxels:...");
     const scene::Scene scene = loadForOptions(o);
@@ -344,6 +356,7 @@ int runRender(const RenderOptions& o) {
         lastPng = pngPathFor(lastExr, o);
         if (!lastPng.empty()) image::writePng(lastPng, img, o.exposure);
     }
+    if (!o.voxelDump.empty()) writeVoxelDump(o.voxelDump, ctx, *renderer.volumes());
     if (!o.quiet && renderer.volumes() && renderer.volumes()->slots != slots)
         std::printf("voxel slots grew from %u to %u (more occupied voxels): %.1f bytes per grid voxel\n", slots,
                     renderer.volumes()->slots, renderer.voxelBytesPerGridVoxel());

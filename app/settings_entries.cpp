@@ -5,6 +5,8 @@
 // RenderOptions else).
 #include "settings_entries.h"
 
+#include "voxel_dump.h"
+
 namespace dvsgi::app {
 
 namespace entries {
@@ -165,6 +167,14 @@ std::vector<Setting> imageAndVoxels() {
                    kRender},
                   FIELD(aovExr), ".exr"),
              "aov.exr"), "none"),
+        unset(with(text({"voxel-dump", kOutput, "FILE.npy", "",
+                         std::string("also write every occupied voxel of the fitted grid, after the last frame, as one "
+                                     "row of float32 in a NumPy .npy table: ") +
+                             kVoxelDumpColumns + " (scripts/voxel-truth.py checks it against a tracer)",
+                         kRender},
+                        FIELD(voxelDump), ".npy"),
+                   "voxels.npy"),
+              "none"),
         unset(with(text({"png", kOutput, "FILE.png|none", "", "8-bit sRGB preview; 'none' writes no preview",
                          kRender},
                         FIELD(outPng), ".png", "none"),

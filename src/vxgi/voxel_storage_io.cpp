@@ -68,6 +68,14 @@ std::vector<glm::vec4> readDirectLight(const gpu::Context& ctx, const VoxelVolum
     return out;
 }
 
+std::vector<glm::vec4> readRadiance(const gpu::Context& ctx, const VoxelVolumes& v) {
+    const std::vector<uint16_t> halves = readAs<uint16_t>(ctx, v.radiance);
+    std::vector<glm::vec4> out(halves.size() / 4);
+    for (size_t i = 0; i < out.size(); ++i)
+        for (int c = 0; c < 4; ++c) out[i][c] = glm::unpackHalf1x16(halves[i * 4 + size_t(c)]);
+    return out;
+}
+
 std::vector<glm::uvec4> readSideLight(const gpu::Context& ctx, const VoxelVolumes& v) {
     const std::vector<uint32_t> index = readVoxelIndex(ctx, v);
     const std::vector<uint32_t> words = readAs<uint32_t>(ctx, v.sides);

@@ -38,6 +38,8 @@ std::vector<uint32_t> readVoxelIndex(const gpu::Context& ctx, const VoxelVolumes
 DenseAttributes readAttributes(const gpu::Context& ctx, const VoxelVolumes& volumes);
 // The per-slot direct light (RGBA, from RGBA16F) per grid voxel; empty voxels read zero.
 std::vector<glm::vec4> readDirectLight(const gpu::Context& ctx, const VoxelVolumes& volumes);
+// The radiance volume (RGBA16F, N^3, level 0) per grid voxel, x fastest.
+std::vector<glm::vec4> readRadiance(const gpu::Context& ctx, const VoxelVolumes& volumes);
 // The per-slot side light (four packed RGB9E5 words, shaders/lib/voxel_sides.glsl)
 // per grid voxel; empty voxels read zero, one-sided ones whatever the slot held.
 std::vector<glm::uvec4> readSideLight(const gpu::Context& ctx, const VoxelVolumes& volumes);
