@@ -1,20 +1,22 @@
 #!/usr/bin/env python3
 """The voxels' own light against a tracer, voxel by voxel.
 
-    dvsgi render SCENE.gltf --bounces 0 --voxel-dump D0.npy ...
-    dvsgi render SCENE.gltf --bounces 1 --voxel-dump D1.npy ...   (same grid)
-    scripts/voxel-truth.py SCENE.gltf D0.npy D1.npy [--voxels 20000] [--spp 64] [--seed 1] [--json OUT.json]
+    dvsgi render SCENE.gltf --bounces K-1 --voxel-dump D0.npy ...
+    dvsgi render SCENE.gltf --bounces K --voxel-dump D1.npy ...   (same grid)
+    scripts/voxel-truth.py SCENE.gltf D0.npy D1.npy [--bounce K] [--voxels 20000] [--spp 64] [--seed 1]
+                           [--json OUT.json]
 
 For a sample of the one-sided voxels with a normal, finds the surface each
 voxel holds as seen from its front (rays cast along -normal from two voxels in
 front, kept where they hit inside the voxel), and traces there the direct
-light (radiance leaving the surface) and the first bounce (one cosine ray per
-point to a directly lit surface), with the tracer of scripts/bounce-reference.py
-(whose scope applies: constant albedos, punctual lights and emitters, no node
-transforms). It prints, per class of voxel (walls along each axis, others such
-as edges and tilted surfaces), the voxels' summed direct light and the light one
-voxel bounce added (D1 radiance - D0 radiance) over the traced sums, and each
-class's share of the traced first bounce. The renders' image size does not
+light (radiance leaving the surface) and the K-th bounce (K = 1, the default:
+one cosine ray per point to a directly lit surface; K = 2: a path of two), with
+the tracer of scripts/bounce-reference.py (whose scope applies: constant
+albedos, punctual lights and emitters, no node transforms). It prints, per class
+of voxel (walls along each axis, others such as edges and tilted surfaces), the
+voxels' summed direct light (D0's) and the light the K-th voxel bounce added
+(D1 radiance - D0 radiance) over the traced sums, and each class's share of the
+traced K-th bounce. The renders' image size does not
 matter; the voxels do. This separates the voxels' light from how rays see the
 voxels: an image that is off while this is right is off in the gather.
 """
@@ -52,10 +54,11 @@ def main():
     ap.add_argument("--voxels", type=int, default=20000, help="voxels sampled (0 = all)")
     ap.add_argument("--spp", type=int, default=64, help="surface points per voxel")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--bounce", type=int, default=1, help="the bounce D1 adds to D0 (1-4)")
     ap.add_argument("--json", help="also write the table's rows here")
     a = ap.parse_args()
-    if a.voxels < 0 or a.spp < 8:
-        fail("--voxels must be >= 0 and --spp >= 8")
+    if a.voxels < 0 or a.spp < 8 or not 1 <= a.bounce <= 4:
+        fail("--voxels must be >= 0, --spp >= 8 and --bounce 1-4")
     spec = importlib.util.spec_from_file_location("bounce_reference",
                                                   os.path.join(os.path.dirname(__file__), "bounce-reference.py"))
     br = importlib.util.module_from_spec(spec)
@@ -92,27 +95,37 @@ def main():
         fail("no voxel's surface found in %s: is it the scene the dumps were rendered from?" % a.scene)
     p, n, rho, owner = map(np.concatenate, (points, normals, rhos, owner))
     direct = br.direct(tracer, lights, p, n, rho, rng) @ LUM
-    d = br.cosine_directions(n, rng)
-    o = p + n * 1e-5
-    t, tri = tracer.hit(o, d)
+    # One path of `bounce` cosine steps per point: its radiance is the receiver's albedo, times each
+    # surface passed on the way's, times the direct light leaving the last.
     first = np.zeros(len(p))
-    hit = tri >= 0
-    hp, hn, ha = br.surface(tracer, o[hit], d[hit], t[hit], tri[hit])
-    first[hit] = (rho[hit] * br.direct(tracer, lights, hp, hn, ha, rng)) @ LUM
+    alive = np.arange(len(p))
+    at, towards, weight = p, n, rho.copy()
+    for step in range(a.bounce):
+        d = br.cosine_directions(towards, rng)
+        o = at + towards * 1e-5
+        t, tri = tracer.hit(o, d)
+        hit = tri >= 0
+        alive, weight = alive[hit], weight[hit]
+        at, towards, ha = br.surface(tracer, o[hit], d[hit], t[hit], tri[hit])
+        if step + 1 < a.bounce:
+            weight = weight * ha
+        else:
+            first[alive] = (weight * br.direct(tracer, lights, at, towards, ha, rng)) @ LUM
     voxels, inverse = np.unique(owner, return_inverse=True)
     count = np.bincount(inverse)
     t0 = np.bincount(inverse, direct) / count
     t1 = np.bincount(inverse, first) / count
-    v0 = d0[voxels, 15:18] @ LUM
+    v0 = d0[voxels, 12:15] @ LUM
     v1 = (d1[voxels, 15:18] - d0[voxels, 15:18]) @ LUM
     m = np.abs(normal[voxels]) / np.linalg.norm(normal[voxels], axis=1, keepdims=True)
     axis = m.argmax(axis=1)
     sign = np.sign(normal[voxels, :][np.arange(len(voxels)), axis])
     cls = np.where(m.max(axis=1) > 0.99, axis * 2 + (sign < 0), 6)
     names = ["+x", "-x", "+y", "-y", "+z", "-z", "other"]
-    print("<!-- scripts/voxel-truth.py %s %s %s --voxels %d --spp %d --seed %d; voxel %.5f m -->" %
-          (a.scene, a.dump0, a.dump1, a.voxels, a.spp, a.seed, size))
-    print("| voxels (normal) | count | direct light: voxels / traced | first bounce: voxels / traced | share of the traced first bounce |")
+    print("<!-- scripts/voxel-truth.py %s %s %s --bounce %d --voxels %d --spp %d --seed %d; voxel %.5f m -->" %
+          (a.scene, a.dump0, a.dump1, a.bounce, a.voxels, a.spp, a.seed, size))
+    print("| voxels (normal) | count | direct light: voxels / traced | bounce %d: voxels / traced | share of the traced bounce %d |"
+          % (a.bounce, a.bounce))
     print("|---|---|---|---|---|")
     rows = [(names[c], cls == c) for c in range(7)] + [("all", np.ones(len(voxels), bool))]
     table = {}
@@ -120,13 +133,13 @@ def main():
         if not sel.any():
             continue
         table[name] = {"count": int(sel.sum()), "direct": v0[sel].sum() / max(t0[sel].sum(), 1e-30),
-                       "first_bounce": v1[sel].sum() / max(t1[sel].sum(), 1e-30),
+                       "bounce": v1[sel].sum() / max(t1[sel].sum(), 1e-30),
                        "share": t1[sel].sum() / max(t1.sum(), 1e-30)}
         r = table[name]
-        print("| %s | %d | %.4f | %.4f | %.3f |" % (name, r["count"], r["direct"], r["first_bounce"], r["share"]))
+        print("| %s | %d | %.4f | %.4f | %.3f |" % (name, r["count"], r["direct"], r["bounce"], r["share"]))
     if a.json:
         with open(a.json, "w") as f:
-            json.dump({"voxel_size": size, "rows": table}, f, indent=2)
+            json.dump({"voxel_size": size, "bounce": a.bounce, "rows": table}, f, indent=2)
 
 
 if __name__ == "__main__":

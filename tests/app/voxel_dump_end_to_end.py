@@ -53,7 +53,7 @@ if p.returncode != 0:
     sys.exit("FAIL voxel-truth.py: rc=%d" % p.returncode)
 a = json.load(open(out))["rows"]["all"]
 R.check(abs(a["direct"] - 1) <= 0.03, "voxels' direct light %.4f of the traced (within 3 %%)" % a["direct"])
-R.check(abs(a["first_bounce"] - 1) <= 0.04, "voxels' first bounce %.4f of the traced (within 4 %%)" % a["first_bounce"])
+R.check(abs(a["bounce"] - 1) <= 0.04, "voxels' first bounce %.4f of the traced (within 4 %%)" % a["bounce"])
 
 for what, args, expect in [
         ("not .npy", ["--voxel-dump", os.path.join(TMP, "x.txt")], "--voxel-dump: expected a .npy file name"),
