@@ -69,4 +69,8 @@ p = subprocess.run([sys.executable, os.path.join(SCRIPTS, "voxel-truth.py"), sce
                    capture_output=True, text=True, timeout=120)
 R.check(p.returncode == 1 and "different voxels" in p.stderr and len(p.stderr.strip().splitlines()) == 1,
         "voxel-truth.py refuses dumps of different grids in one line (%s)" % p.stderr.strip())
+p = subprocess.run([sys.executable, os.path.join(SCRIPTS, "voxel-truth.py"), scene, *dumps, "--bounce", "9"],
+                   capture_output=True, text=True, timeout=120)
+R.check(p.returncode == 1 and "--bounce 1-4" in p.stderr and len(p.stderr.strip().splitlines()) == 1,
+        "voxel-truth.py refuses --bounce 9 in one line (%s)" % p.stderr.strip())
 R.finish()
