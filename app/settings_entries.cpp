@@ -170,7 +170,8 @@ std::vector<Setting> imageAndVoxels() {
         unset(with(text({"voxel-dump", kOutput, "FILE.npy", "",
                          std::string("also write every occupied voxel of the fitted grid, after the last frame, as one "
                                      "row of float32 in a NumPy .npy table: ") +
-                             kVoxelDumpColumns + " (scripts/voxel-truth.py checks it against a tracer)",
+                             kVoxelDumpColumns + " (scripts/voxel-truth.py checks it against a tracer); the grid is read back "
+                                                 "whole, about 90 bytes of host memory per grid voxel (1.5 GiB at 256^3)",
                          kRender},
                         FIELD(voxelDump), ".npy"),
                    "voxels.npy"),
