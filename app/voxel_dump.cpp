@@ -3,15 +3,12 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "image/file_util.h"
 #include "image/image_io.h"
 #include "shared/voxel_data.h"
 #include "vxgi/volumes.h"
@@ -69,15 +66,15 @@ void writeVoxelDump(const std::string& path, const gpu::Context& ctx, const vxgi
                     radiance[i].r, radiance[i].g, radiance[i].b, std::round(direct[i].a - 1.0f), count};
                 rows.insert(rows.end(), row, row + kVoxelDumpColumnCount);
             }
-    const std::filesystem::path p(path);
-    std::error_code ec;  // a folder that cannot be made shows up as the open failing
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path(), ec);
-    std::ofstream f(path, std::ios::binary);
-    if (!f) throw image::IoError("--voxel-dump: " + path + ": cannot open for writing");
     const std::string header = npyHeader(rows.size() / kVoxelDumpColumnCount, kVoxelDumpColumnCount);
-    f.write(header.data(), std::streamsize(header.size()));
-    f.write(reinterpret_cast<const char*>(rows.data()), std::streamsize(rows.size() * sizeof(float)));
-    if (!f) throw image::IoError("--voxel-dump: " + path + ": write failed");
+    std::vector<uint8_t> bytes(header.begin(), header.end());
+    const auto* data = reinterpret_cast<const uint8_t*>(rows.data());
+    bytes.insert(bytes.end(), data, data + rows.size() * sizeof(float));
+    try {
+        image::detail::writeFileBytes(path, bytes);  // atomic, folders created, errors name the path
+    } catch (const image::IoError& e) {
+        throw image::IoError(std::string("--voxel-dump: ") + e.what());
+    }
 }
 
 }  // namespace dvsgi::app
