@@ -425,6 +425,14 @@ std::vector<Setting> imageAndVoxels() {
                      kAll, kFrame},
                     FIELD(settings.voxelLight.backsDark)),
              "off"),
+        with(choice({"edge-voxels", kVoxelLight, "whole|faces", "",
+                     "voxels that hold an edge or a corner: whole = a cube lit with the mean normal, as every "
+                     "voxel; faces = rays pass beside the part of a voxel its surface does not reach (the compute "
+                     "voxelizer's triangle boxes; other voxelizers: whole voxels), and an edge's faces are lit "
+                     "and shown one by one (with --normal-weighted off)",
+                     kAll, kFrame},
+                    {{"whole", false}, {"faces", true}}, FIELD(settings.voxelLight.edgeFaces)),
+             "faces"),
         with(choice({"voxel-occlusion", kVoxelLight, "M", "",
                      "occlusion of lights at voxels for all lights: shadowmap, raycast (hard), soft (raycast, "
                      "nu += (1-nu) kappa / t), none; per-light: each light's own mode (shadowmap unless "

@@ -18,8 +18,9 @@
 // light kept per slot; built with TRACED, the second: as below, with that
 // light instead of the cones'.
 // Built with RAY_NORMALS, the dispatch before the rays: each voxel's mean
-// normal, packed per slot for the rays to read, and its cells' occupancy
-// bits (the buffer cleared before).
+// normal, packed per slot for the rays to read, with (pc.flags.x = 1,
+// --edge-voxels faces) whether it shows its faces and that its extents
+// apply, and its cells' occupancy bits (the buffer cleared before).
 // One invocation per occupied voxel (an entry of the list, which is its slot).
 layout(local_size_x = VOXEL_LIST_GROUP) in;
 
@@ -48,6 +49,9 @@ layout(set = 0, binding = BIND_BOUNCE_TRACED, rg32ui) uniform uimage3D traced;
 layout(set = 0, binding = BIND_BOUNCE_RAY_NORMALS, r32ui) uniform uimage3D rayNormals;
 layout(set = 0, binding = BIND_BOUNCE_RAY_OCCUPANCY, std430) buffer RayOccupancy { uint rayOccupancy[]; };
 VOXEL_INDEX_BLOCK(BIND_BOUNCE_INDEX, readonly);
+#endif
+#if defined(DVSGI_RAY_TRACE) || defined(DVSGI_RAY_NORMALS)
+VOXEL_EXTENTS_BLOCK(BIND_BOUNCE_EXTENTS, readonly);
 #endif
 layout(push_constant) uniform Push { BouncePush pc; };
 
@@ -120,7 +124,10 @@ vec3 bounceNormal(uint slot, uint code, out int axis, out int strong) {
 void main() {
     uint entry = listInvocation();
     if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
-    imageStore(rayNormals, slotTexel(entry, 0u), uvec4(packRayNormal(voxelNormal(entry)), 0u, 0u, 0u));
+    bool edges = pc.flags.x != 0u;
+    uint word = packRayNormal(voxelNormal(entry)) | (edges ? RAY_NORMAL_EXTENTS_BIT : 0u) |
+                (edges && voxelShowsFaces(entry) ? RAY_NORMAL_FACES_BIT : 0u);
+    imageStore(rayNormals, slotTexel(entry, 0u), uvec4(word, 0u, 0u, 0u));
     ivec3 v = listVoxel(list.entries[entry]);
     for (uint level = 0u; level < RAY_OCCUPANCY_LEVELS; ++level) {
         uint bit = rayOccupancyBit(v, level);

@@ -69,6 +69,10 @@ void main() {
     vec3 pos, neg;
     voxelNormalWeights(slot, pos, neg);
     vec3 n = voxelNormal(slot);
+    // --edge-voxels faces (keep.y, with Lambert only): the share of the voxel
+    // that is one plane is lit with Lambert, the rest as faces along the axes.
+    bool edges = pc.keep.y != 0u;
+    float planeW = edges ? voxelPlaneShare(slot, pos, neg) : 1.0;
     float s = grid.originSize.w;
     vec3 centre = grid.originSize.xyz + (vec3(v) + 0.5) * s;
     // Shadows are looked up at the voxel centre pushed half a voxel along its
@@ -92,6 +96,11 @@ void main() {
     // of the radiance that cones gather, or it would be counted twice.
     vec3 radiance = pc.params.z > 0.5 ? voxelEmission(slot) : vec3(0.0);
     vec3 side[2] = vec3[2](radiance, radiance);
+    // An edge or corner voxel also keeps each axis face's light apart, for
+    // rays to see the faces that turn toward them (lib/voxel_rays.glsl).
+    bool faces = edges && voxelShowsFaces(slot);
+    vec3 face[3] = vec3[3](radiance, radiance, radiance);
+    vec3 faceSign = mix(vec3(-1.0), vec3(1.0), greaterThanEqual(pos, neg));
     for (uint i = 0u; i < pc.flags.x; ++i) {
         GpuLight light = lights[i];
         vec3 L;
@@ -106,8 +115,33 @@ void main() {
         // Eq. 5 generalized to signed weights: sum over axes of the weight of
         // the normals facing the light along that axis times the cosine there.
         // For a single normal it is exactly W_x D_x + W_y D_y + W_z D_z.
-        float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : max(dot(n, L), 0.0);
-        if (att > 0.0) radiance += albedo / PI * E * att * visibility(light, mode, P, n, L, dist);
+        float cosN = max(dot(n, L), 0.0);
+        if (!edges) {
+            float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : cosN;
+            if (att > 0.0) radiance += albedo / PI * E * att * visibility(light, mode, P, n, L, dist);
+        } else {
+            // A block's edge voxel holds a sunlit face and a shadowed one: lit
+            // with their mean normal, both were lit alike. Each face is lit
+            // from just outside it on its side, weighted by its share of the
+            // normals (docs/quality.md, "Surfaces' extent inside their voxels").
+            vec3 planeLight = planeW * cosN > 0.0
+                                  ? albedo / PI * E * (planeW * cosN) * visibility(light, mode, P, n, L, dist)
+                                  : vec3(0.0);
+            radiance += planeLight;
+            for (int a = 0; a < 3; ++a) {
+                if (faces) face[a] += planeLight;
+                float w = L[a] > 0.0 ? pos[a] : neg[a];
+                bool ownFace = faces && faceSign[a] * L[a] > 0.0;
+                float cosine = abs(L[a]);
+                if (planeW >= 1.0 || cosine <= 0.0 || (w <= 0.0 && !ownFace)) continue;
+                vec3 e = vec3(0.0);
+                e[a] = L[a] > 0.0 ? 1.0 : -1.0;
+                vec3 faceLight = (1.0 - planeW) * albedo / PI * E * cosine *
+                                 visibility(light, mode, centre + e * (0.5 * s), e, L, dist);
+                radiance += w * faceLight;
+                if (ownFace) face[a] += faceLight;
+            }
+        }
         if (axis < 0) continue;
         for (int k = 0; k < 2; ++k) {
             float cosine = dot(sideN[k], L);
@@ -121,6 +155,11 @@ void main() {
     // a feedback frame's rays; the bounce then writes this frame's. Dynamic
     // ones were cleared, and show where they are now.
     if (pc.keep.x == 0u || entry >= list.header.counts.y) imageStore(outRadiance, v, vec4(shown, twoSidedOpacity(code)));
+    if (faces) {
+        imageStore(sides, slotTexel(slot, 0u),
+                   uvec4(packRgb9e5(face[0]), packRgb9e5(face[1]), packRgb9e5(face[2]), packRgb9e5(radiance)));
+        return;
+    }
     if (axis < 0) return;
     // The reflected light stays for a feedback frame's bounce to blend with;
     // otherwise the bounces start from none.

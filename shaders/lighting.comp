@@ -45,6 +45,7 @@ layout(set = 0, binding = BIND_LIGHT_VOXEL_DIRECTIONAL) uniform sampler3D direct
 #include "shared/voxel_list_pass.h"
 layout(set = 0, binding = BIND_LIGHT_RAY_SIDES, rgba32ui) uniform readonly uimage3D sides;
 layout(set = 0, binding = BIND_LIGHT_RAY_NORMALS, r32ui) uniform readonly uimage3D rayNormals;
+VOXEL_EXTENTS_BLOCK(BIND_LIGHT_RAY_EXTENTS, readonly);
 layout(set = 0, binding = BIND_LIGHT_RAY_OCCUPANCY, std430) readonly buffer RayOccupancy { uint rayOccupancy[]; };
 VOXEL_INDEX_BLOCK(BIND_LIGHT_RAY_INDEX, readonly);
 #define RAY_RADIANCE(c) texelFetch(radianceVolume, c, 0)

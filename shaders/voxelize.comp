@@ -32,6 +32,7 @@ layout(set = 0, binding = BIND_VOXC_DRAWS, std430) readonly buffer Draws { GpuDr
 layout(set = 0, binding = BIND_VOXC_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = 0, binding = BIND_VOXC_ACCUM, r32f) uniform coherent image3D accum;
 VOXEL_INDEX_BLOCK(BIND_VOXC_INDEX, coherent);
+VOXEL_EXTENTS_BLOCK(BIND_VOXC_EXTENTS, );
 layout(set = 0, binding = BIND_VOXC_VERTICES, std430) readonly buffer Vertices { float vertexData[]; };
 layout(set = 0, binding = BIND_VOXC_INDICES, std430) readonly buffer Indices { uint indexData[]; };
 layout(set = 0, binding = BIND_VOXC_GROUPS, std430) readonly buffer Groups { VoxcGroup groups[]; };
@@ -168,7 +169,13 @@ void addSample(ivec3 voxel, ivec3 q) {
     if (!materialCovers(m, base.a, vec2(q.xy) + 0.5)) return;
     vec3 emission = m.emission.rgb * texel[1].rgb;
     vec3 n = normalize(bary.x * t.normal[0] + bary.y * t.normal[1] + bary.z * t.normal[2]);
-    accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
+    uint slot1 = accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
+    if (slot1 == 0u) return;
+    // Where in the voxel the triangle can be: its bounding box, per axis.
+    vec3 lo = min(t.p[0], min(t.p[1], t.p[2])) - vec3(voxel), hi = max(t.p[0], max(t.p[1], t.p[2])) - vec3(voxel);
+    uint bits = 0u;
+    for (uint k = 0u; k < 3u; ++k) bits |= voxelExtentAxisBits(lo[k], hi[k]) << (VOXEL_EXTENT_STEPS * k);
+    atomicOr(voxelExtents[slot1 - 1u], bits);
 }
 
 // The candidate layers of a column: those the plane crosses over the closed

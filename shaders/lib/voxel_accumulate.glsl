@@ -53,15 +53,15 @@ void accumulateChannel(uint slot, uint channel, float value) {
 // Static voxelization claims voxels as static; dynamic voxelization leaves
 // static voxels alone (they are cleared only when static geometry changes).
 // After a clipmap scroll, static voxelization writes only the exposed slabs.
-// Returns false when the fragment was skipped (a static voxel under dynamic
-// voxelization, or no slot left: counted for the host, which grows the
-// storage and voxelizes again).
-bool accumulateFragment(ivec3 voxel, uint mode, vec3 albedo, vec3 emission, vec3 n) {
-    if (mode != VOXELIZE_DYNAMIC && keptByScroll(voxel)) return false;
+// Returns the slot + 1 it added to, or 0 when the fragment was skipped (a
+// static voxel under dynamic voxelization, or no slot left: counted for the
+// host, which grows the storage and voxelizes again).
+uint accumulateFragment(ivec3 voxel, uint mode, vec3 albedo, vec3 emission, vec3 n) {
+    if (mode != VOXELIZE_DYNAMIC && keptByScroll(voxel)) return 0u;
     uint value = claimVoxel(voxel, mode);
-    if (mode == VOXELIZE_DYNAMIC && (value & VOXEL_INDEX_STATIC) != 0u) return false;
+    if (mode == VOXELIZE_DYNAMIC && (value & VOXEL_INDEX_STATIC) != 0u) return 0u;
     uint slot1 = indexSlot(value);
-    if (slot1 == 0u) return false;
+    if (slot1 == 0u) return 0u;
     uint slot = slot1 - 1u;
     accumulateChannel(slot, CH_ALBEDO_R, albedo.r);
     accumulateChannel(slot, CH_ALBEDO_G, albedo.g);
@@ -77,5 +77,8 @@ bool accumulateFragment(ivec3 voxel, uint mode, vec3 albedo, vec3 emission, vec3
     accumulateChannel(slot, CH_NORMAL_NEG_Y, n.y < 0.0 ? n2.y : 0.0);
     accumulateChannel(slot, CH_NORMAL_POS_Z, n.z > 0.0 ? n2.z : 0.0);
     accumulateChannel(slot, CH_NORMAL_NEG_Z, n.z < 0.0 ? n2.z : 0.0);
-    return true;
+    accumulateChannel(slot, CH_FIRST_X, n.x);
+    accumulateChannel(slot, CH_FIRST_Y, n.y);
+    accumulateChannel(slot, CH_FIRST_Z, n.z);
+    return slot1;
 }

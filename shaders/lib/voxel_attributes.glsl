@@ -54,3 +54,30 @@ vec3 voxelNormalDirection(uint slot) {
     voxelNormalSums(slot, pos, neg);
     return normalFromWeights(pos, neg);
 }
+
+// Mean of the fragments' normals (CH_FIRST_*).
+vec3 voxelFirstMoment(uint slot) {
+    float n = max(voxelCount(slot), 1e-20);
+    return vec3(voxelChannel(slot, CH_FIRST_X), voxelChannel(slot, CH_FIRST_Y), voxelChannel(slot, CH_FIRST_Z)) / n;
+}
+
+// How much of the voxel is one plane (1) rather than faces along the axes (0).
+// One plane of normal n has pos - neg squared per axis and sqrt(pos) -
+// sqrt(neg) = n: its mean normal is as long as that (lp = 1). Faces along
+// the axes in shares w_a have a mean normal of length |pos - neg| (la). The
+// mean normal's length lm is read as a blend of the two.
+float voxelPlaneShare(uint slot, vec3 pos, vec3 neg) {
+    float lp = length(sqrt(pos) - sqrt(neg)), la = length(pos - neg), lm = length(voxelFirstMoment(slot));
+    return lp - la > 1e-3 ? clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
+}
+
+// A one-sided voxel (the side code SIDE_ONE of lib/voxel_sides.glsl) made of
+// faces along several axes, an edge or a corner: with --edge-voxels faces lit
+// per axis face, and rays see the faces that turn toward them.
+const float FACES_BELOW_PLANE_SHARE = 0.99;
+bool voxelShowsFaces(uint slot) {
+    vec3 pos, neg;
+    voxelNormalWeights(slot, pos, neg);
+    if (any(greaterThanEqual(min(pos, neg), vec3(TWO_SIDED_MIN_WEIGHT)))) return false;
+    return voxelPlaneShare(slot, pos, neg) < FACES_BELOW_PLANE_SHARE;
+}

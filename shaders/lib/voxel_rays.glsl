@@ -37,6 +37,18 @@ vec3 radianceSeen(uint slot, vec4 r, vec3 d) {
     return unpackRgb9e5(plusSide ? t.x : t.y) + unpackRgb9e5(plusSide ? t.z : t.w);
 }
 
+// What a ray along d sees of a voxel made of faces along several axes
+// (voxelShowsFaces): its reflected light, and the direct light of each axis
+// face weighted by how much of it turns toward the ray.
+vec3 facesSeen(uint slot, vec4 r, vec3 nc, vec3 d) {
+    uvec4 t = imageLoad(sides, slotTexel(slot - 1u, 0u));
+    vec3 reflected = max(r.rgb - unpackRgb9e5(t.w), vec3(0.0));
+    vec3 w = nc * nc * max(-d * sign(nc), vec3(0.0));
+    float total = w.x + w.y + w.z;
+    if (total < 1e-6) return reflected;
+    return reflected + (w.x * unpackRgb9e5(t.x) + w.y * unpackRgb9e5(t.y) + w.z * unpackRgb9e5(t.z)) / total;
+}
+
 // Whether occupied voxel c (normal nc) belongs to the surface a ray leaving voxel
 // `self` (centre, normal n) starts on: within a voxel and a half of its
 // plane and facing the same way. A surface voxelizes into one or two layers;
@@ -65,6 +77,45 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
     return t + ahead / along > exitDistance(p, inv, vec3(c), 1.0);
 }
 
+// The box (voxel units) the voxel's surface covers, from its extents
+// (shared/voxel_data.h): per axis, from the lowest eighth reached to the highest.
+void extentBox(ivec3 c, uint bits, out vec3 lo, out vec3 hi) {
+    for (int k = 0; k < 3; ++k) {
+        uint m = (bits >> (VOXEL_EXTENT_STEPS * uint(k))) & 0xffu;
+        if (m == 0u) m = 0xffu;
+        lo[k] = float(c[k]) + float(findLSB(m)) / float(VOXEL_EXTENT_STEPS);
+        hi[k] = float(c[k]) + float(findMSB(m) + 1) / float(VOXEL_EXTENT_STEPS);
+    }
+}
+
+// Whether a ray from p along d, at p + d t inside occupied voxel c (normal
+// nc, extents `bits`), misses the part of c that its surface covers: a plane
+// along an axis where the ray crosses the plane through c's centre (or where
+// it enters, if it does not cross it inside c), anything else along its whole
+// path through c. Without it a voxel holding a block's edge is a whole cube
+// to rays, and each edge stands half a voxel out (docs/quality.md, "Surfaces'
+// extent inside their voxels").
+bool passesBeside(ivec3 c, vec3 nc, uint bits, vec3 p, vec3 d, vec3 inv, float t) {
+    if (bits == 0u || bits == VOXEL_EXTENT_ALL) return false;  // not known (not the compute voxelizer's), or all
+    vec3 lo, hi;
+    extentBox(c, bits, lo, hi);
+    float tExit = exitDistance(p, inv, vec3(c), 1.0);
+    vec3 m = abs(nc);
+    if (max(m.x, max(m.y, m.z)) >= RAY_PLANE_AXIS_COS) {
+        int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+        float tp = abs(d[a]) > 1e-7 ? (float(c[a]) + 0.5 - p[a]) / d[a] : -1.0;
+        float tq = tp >= t && tp <= tExit ? tp : t;
+        vec3 q = p + d * tq;
+        lo[a] = -1e30;
+        hi[a] = 1e30;
+        return any(lessThan(q, lo - 1e-4)) || any(greaterThan(q, hi + 1e-4));
+    }
+    vec3 t0 = (lo - p) * inv, t1 = (hi - p) * inv;
+    vec3 tn = min(t0, t1), tf = max(t0, t1);
+    float enter = max(max(tn.x, tn.y), max(tn.z, t)), leave = min(min(tf.x, tf.y), min(tf.z, tExit));
+    return enter > leave + 1e-4;
+}
+
 // One step of a ray from voxel-space point p along unit d (1/d = inv), at
 // parameter t, its i-th: whether the ray ends here, with what it met in
 // `seen`, or else t moved to the next cell. It ends at the first occupied
@@ -91,11 +142,16 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
         if (r.a > 0.0) {
             // Its slot and normal, read once for the rules below.
             uint slot = voxelSlotAt(c);
-            vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+            uint word = slot != 0u ? imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r : 0u;
+            vec3 nc = slot != 0u ? unpackRayNormal(word) : vec3(0.0);
+            uint extent = (word & RAY_NORMAL_EXTENTS_BIT) != 0u ? voxelExtents[slot - 1u] : VOXEL_EXTENT_ALL;
             if (!onOwnSurface(c, nc, self, n) && !onOwnSurface(c, nc, besideAt, besideN) &&
-                (i == 0 || !passesInFront(c, nc, p, d, inv, t))) {
-                if (i != 0) seen = radianceSeen(slot, r, d);
-                if (backsDark && sideCodeOfOpacity(r.a) == SIDE_ONE) seen *= seenFromFront(nc, d);
+                (i == 0 || !passesInFront(c, nc, p, d, inv, t)) && !passesBeside(c, nc, extent, p, d, inv, t)) {
+                bool faces = (word & RAY_NORMAL_FACES_BIT) != 0u;
+                if (i != 0) seen = faces ? facesSeen(slot, r, nc, d) : radianceSeen(slot, r, d);
+                // A voxel that shows its faces weighs each by how it turns toward the ray already; its
+                // mean normal says nothing of which way a face looks (a convex edge's faces both show).
+                if (backsDark && sideCodeOfOpacity(r.a) == SIDE_ONE && !faces) seen *= seenFromFront(nc, d);
                 return true;
             }
         }

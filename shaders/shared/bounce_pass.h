@@ -11,7 +11,8 @@ DVSGI_BEGIN
 
 struct BouncePush {
     ConeParams cone;
-    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS), y (clipmap) the voxels' level,
+    uvec4 flags;  // x 1 = write the per-workgroup change statistics (BIND_BOUNCE_STATS) (the ray normals' dispatch:
+                  // 1 = --edge-voxels faces), y (clipmap) the voxels' level,
                   // z 1: a one-sided voxel a ray meets from behind shows it no light (the ray pass),
                   // w rays per voxel (the ray pass)
     // Temporal blending of the reflected light (BIND_BOUNCE_HISTORY): x this
@@ -49,13 +50,17 @@ DVSGI_CONST(uint, BOUNCE_RAYS_SLOT_BYTES, 8);  // its texel
 DVSGI_CONST(uint, BIND_BOUNCE_INDEX, 12);  // the slot index (voxel_data.h), read by the ray pass
 // Rays: per slot, R32UI, the voxel's mean normal (lib/voxel_attributes.glsl's
 // voxelNormal) in RAY_NORMAL_BITS per axis, written by a dispatch before the
-// rays so that a ray meeting a voxel reads one word instead of its seven
-// attribute channels. Steps of 1/RAY_NORMAL_SCALE; a normal that cancelled
-// stays 0.
+// rays so that a ray meeting a voxel reads one word instead of its attribute
+// channels. Steps of 1/RAY_NORMAL_SCALE; a normal that cancelled stays 0.
+// Above the axes, with --edge-voxels faces: RAY_NORMAL_EXTENTS_BIT, the rays
+// read the voxel's extents (voxel_data.h; the rays' passes bind them), and
+// RAY_NORMAL_FACES_BIT where it shows its faces (lib/voxel_rays.glsl).
 DVSGI_CONST(uint, BIND_BOUNCE_RAY_NORMALS, 13);
 DVSGI_CONST(uint, BOUNCE_RAY_NORMAL_SLOT_BYTES, 4);  // its texel
 DVSGI_CONST(uint, RAY_NORMAL_BITS, 10);
 DVSGI_CONST(float, RAY_NORMAL_SCALE, 511.0);
+DVSGI_CONST(uint, RAY_NORMAL_FACES_BIT, 1u << 30);
+DVSGI_CONST(uint, RAY_NORMAL_EXTENTS_BIT, 1u << 31);
 // Rays: which cells of 2, 4, 8 and 16 voxels per side hold an occupied
 // voxel, one bit per cell (RAY_OCCUPANCY_LEVELS levels, level l's cells of
 // 2^(l + 1) voxels, bit x + m (y + m z) from word rayOccupancyOffset(n, l),
@@ -114,6 +119,8 @@ DVSGI_FUNCTION uint gatherRaySeed(uint x, uint y, uint count) {
 // left it, read for the change statistics: levels 1.. share one scratch
 // radiance volume, cleared before each level's bounce, so it holds no "before".
 DVSGI_CONST(uint, BIND_BOUNCE_LEVELS_BEFORE, 15);
+// The rays read the voxels' extents (voxel_data.h).
+DVSGI_CONST(uint, BIND_BOUNCE_EXTENTS, 16);
 
 DVSGI_END
 

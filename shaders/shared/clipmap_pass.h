@@ -18,6 +18,7 @@ DVSGI_CONST(uint, BIND_SCROLL_ACCUM, 0);   // per-slot attributes (zeroed for fr
 DVSGI_CONST(uint, BIND_SCROLL_DIRECT, 1);  // per-slot direct light (zeroed)
 DVSGI_CONST(uint, BIND_SCROLL_INDEX, 2);   // the slot index (freed voxels set to 0)
 DVSGI_CONST(uint, BIND_SCROLL_LIST, 3);    // the list (freed entries set to VOXEL_LIST_FREE)
+DVSGI_CONST(uint, BIND_SCROLL_EXTENTS, 4);  // per-slot extents (zeroed)
 
 DVSGI_END
 

@@ -16,7 +16,8 @@ struct VoxelLightPush {
                    // (a feedback frame's bounce blends with it)
     uvec4 keep;    // x 1 = leave the static voxels' radiance as the last bounce wrote it (a feedback
                    // frame's rays read the light of the frame before, as its cones read the filtered
-                   // volumes); yzw unused
+                   // volumes); y 1 = --edge-voxels faces (with Lambert, flags.y = 0): edge voxels lit
+                   // per axis face, their faces' light kept in BIND_INJECT_SIDES; zw unused
 };
 DVSGI_CHECK_SIZE(VoxelLightPush, 48);
 

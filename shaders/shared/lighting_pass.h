@@ -27,6 +27,7 @@ DVSGI_CONST(uint, BIND_LIGHT_RAY_SIDES, 13);
 DVSGI_CONST(uint, BIND_LIGHT_RAY_INDEX, 14);
 DVSGI_CONST(uint, BIND_LIGHT_RAY_NORMALS, 15);
 DVSGI_CONST(uint, BIND_LIGHT_RAY_OCCUPANCY, 16);
+DVSGI_CONST(uint, BIND_LIGHT_RAY_EXTENTS, 17);
 
 // Shadow cones and area-light visibility march like the gather's cones.
 struct LightingPush {

@@ -32,7 +32,33 @@ DVSGI_CONST(uint, CH_NORMAL_POS_Y, 9);
 DVSGI_CONST(uint, CH_NORMAL_NEG_Y, 10);
 DVSGI_CONST(uint, CH_NORMAL_POS_Z, 11);
 DVSGI_CONST(uint, CH_NORMAL_NEG_Z, 12);
-DVSGI_CONST(uint, VOXEL_CHANNELS, 13);
+// The normals' first moment, sum of n over fragments. Its length against the
+// second moment's tells one plane (at any angle) from faces along several
+// axes, an edge or a corner, which the weights above cannot: a plane at 45
+// degrees and two faces at right angles have the same n_a^2 sums
+// (lib/voxel_attributes.glsl, voxelPlaneShare).
+DVSGI_CONST(uint, CH_FIRST_X, 13);
+DVSGI_CONST(uint, CH_FIRST_Y, 14);
+DVSGI_CONST(uint, CH_FIRST_Z, 15);
+DVSGI_CONST(uint, VOXEL_CHANNELS, 16);
+
+// The part of its voxel a surface covers (--edge-voxels faces). Per slot, one
+// uint in the extents buffer (VOXEL_EXTENTS_BLOCK): per axis a (bits 8a to
+// 8a + 7) bit k is set when a triangle that gave the voxel a sample has its
+// bounding box reach [k/8, (k+1)/8) of the voxel along a. The compute
+// voxelizer ORs them in; the other voxelizers leave 0, read as the whole voxel.
+DVSGI_CONST(uint, VOXEL_EXTENT_STEPS, 8);
+DVSGI_CONST(uint, VOXEL_EXTENT_ALL, 0xffffffu);
+// One axis's bits for a box from lo to hi along it, in voxels from the
+// voxel's low face (clamped to the voxel: a box reaching past it covers it to
+// that face).
+DVSGI_FUNCTION uint voxelExtentAxisBits(float lo, float hi) {
+    float fa = lo * float(VOXEL_EXTENT_STEPS), fb = hi * float(VOXEL_EXTENT_STEPS);
+    int a = fa <= 0.0f ? 0 : (fa >= 7.0f ? 7 : int(fa));
+    int b = fb <= 1.0f ? 0 : (fb >= 8.0f ? 7 : (float(int(fb)) == fb ? int(fb) - 1 : int(fb)));
+    if (b < a) b = a;
+    return ((2u << uint(b)) - 1u) & ~((1u << uint(a)) - 1u);
+}
 
 // Thin walls. A voxel whose normal weights hold both signs of one axis (each
 // at least TWO_SIDED_MIN_WEIGHT) holds both faces of a wall thinner than a
@@ -164,6 +190,9 @@ ivec3 slotTexel(uint slot, uint channel) { return ivec3(slot % VOXEL_SLOT_ROW, s
 // image: nothing filters it, and the host reads and writes it as plain words.
 #define VOXEL_INDEX_BLOCK(B, Q) \
     layout(set = 0, binding = B, std430) Q buffer VoxelIndex { uint voxelIndex[]; }
+// The extents (VOXEL_EXTENT_*), one uint per slot.
+#define VOXEL_EXTENTS_BLOCK(B, Q) \
+    layout(set = 0, binding = B, std430) Q buffer VoxelExtents { uint voxelExtents[]; }
 #endif
 
 #endif

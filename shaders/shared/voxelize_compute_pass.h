@@ -103,6 +103,7 @@ DVSGI_CONST(uint, BIND_VOXC_GROUPS, 7);
 DVSGI_CONST(uint, BIND_VOXC_TILES, 8);     // VoxcTile[VOXC_MAX_TILES]
 DVSGI_CONST(uint, BIND_VOXC_LIST, 10);     // occupied-voxel list (appended to)
 DVSGI_CONST(uint, BIND_VOXC_INDIRECT, 9);  // uint[4]: the tile phase's dispatch (see VOXC_TILE_ROW)
+DVSGI_CONST(uint, BIND_VOXC_EXTENTS, 11);  // per-slot extents (voxel_data.h), OR-ed into
 
 // scene::Vertex as floats: position 0-2, normal 3-5, uv 6-7, tangent 8-11.
 DVSGI_CONST(uint, VOXC_VERTEX_FLOATS, 12);

@@ -14,7 +14,8 @@ namespace {
 namespace sh = dvsgi::shader;
 
 // Formats from docs/ARCHITECTURE.md ("Volumes", "The frame").
-constexpr uint64_t kAttributeBytes = sh::VOXEL_CHANNELS * 4;  // 13 R32F channels per slot
+constexpr uint64_t kAttributeBytes = sh::VOXEL_CHANNELS * 4;  // 16 R32F channels per slot
+constexpr uint64_t kExtentBytes = 4;                          // the extents, uint32 per slot
 constexpr uint64_t kIndexBytes = 4;                           // R32_UINT slot index per grid voxel
 constexpr uint64_t kVoxelLightBytes = 8;                      // RGBA16F: direct light, radiance, directional
 constexpr uint64_t kListEntryBytes = 4;                       // occupied-voxel list: packed coordinate
@@ -75,20 +76,21 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         // attributes and direct light are written.
         const uint64_t slots = in.slots ? in.slots : vxgi::defaultSlotCapacity(in.voxels);
         out.push_back({"clear all voxels", 0,
-                       n3 * (kIndexBytes + kVoxelLightBytes) + slots * (kAttributeBytes + kVoxelLightBytes)});
+                       n3 * (kIndexBytes + kVoxelLightBytes) +
+                           slots * (kAttributeBytes + kExtentBytes + kVoxelLightBytes)});
         // A static voxelization clears only what the list holds (all of last
         // frame's voxels, static and dynamic), as the dynamic clear does.
         out.push_back({"clear occupied voxels", occupied * kListEntryBytes,
-                       occupied * (kAttributeBytes + 2 * kVoxelLightBytes + kIndexBytes)});
+                       occupied * (kAttributeBytes + kExtentBytes + 2 * kVoxelLightBytes + kIndexBytes)});
         out.push_back({"voxelize static", in.staticGeometryBytes,
-                       staticVoxels * (kAttributeBytes + kIndexBytes + kListEntryBytes)});
+                       staticVoxels * (kAttributeBytes + kExtentBytes + kIndexBytes + kListEntryBytes)});
         // The voxels dynamic geometry wrote last frame (their list entries);
         // this frame's count stands in for them (the object moves a voxel or
-        // less per frame). Slots (attributes, direct light), radiance and index are zeroed.
+        // less per frame). Slots (attributes, extents, direct light), radiance and index are zeroed.
         out.push_back({"clear dynamic voxels", dynamic * kListEntryBytes,
-                       dynamic * (kAttributeBytes + 2 * kVoxelLightBytes + kIndexBytes)});
+                       dynamic * (kAttributeBytes + kExtentBytes + 2 * kVoxelLightBytes + kIndexBytes)});
         out.push_back({"voxelize dynamic", in.dynamicGeometryBytes + dynamic * kIndexBytes,
-                       dynamic * (kAttributeBytes + kIndexBytes + kListEntryBytes)});
+                       dynamic * (kAttributeBytes + kExtentBytes + kIndexBytes + kListEntryBytes)});
     }
     // Every view rasterizes all geometry and writes its whole layer.
     out.push_back({"shadow maps", geometry * in.shadowViews,

@@ -38,7 +38,7 @@ const uint32_t kUpsample[] = {
 #include "shaders/upsample.comp.inc"
 };
 const vxgi::RayBindings kRayBindings{sh::BIND_GATHER_RAY_SIDES, sh::BIND_GATHER_RAY_INDEX, sh::BIND_GATHER_RAY_NORMALS,
-                                     sh::BIND_GATHER_RAY_OCCUPANCY};
+                                     sh::BIND_GATHER_RAY_OCCUPANCY, sh::BIND_GATHER_RAY_EXTENTS};
 
 }  // namespace
 

@@ -31,7 +31,7 @@ const uint32_t kCompAreaRays[] = {
 #include "shaders/lighting_area_rays.comp.inc"
 };
 const vxgi::RayBindings kRayBindings{sh::BIND_LIGHT_RAY_SIDES, sh::BIND_LIGHT_RAY_INDEX, sh::BIND_LIGHT_RAY_NORMALS,
-                                     sh::BIND_LIGHT_RAY_OCCUPANCY};
+                                     sh::BIND_LIGHT_RAY_OCCUPANCY, sh::BIND_LIGHT_RAY_EXTENTS};
 
 }  // namespace
 

@@ -140,6 +140,7 @@ Renderer::Renderer(const gpu::Context& ctx, const scene::Scene& sceneIn, const R
         aniso_ = std::make_unique<vxgi::AnisoFilterPass>(ctx);
         bounce_ = std::make_unique<vxgi::BouncePass>(ctx, clipmap);
         rayData_ = std::make_unique<vxgi::RayData>();
+        rayData_->edgeFaces = vxgi::edgeFacesLit(settings.voxelLight);
         temporal_ = std::make_unique<TemporalIndirectPass>(ctx);
     }
     for (const gpu::Image* v : volumes_->all()) tracker_.assume(*v, gpu::use::ComputeReadWrite);
@@ -555,7 +556,8 @@ bool Renderer::applySettings(const RenderSettings& s) {
                        o.softKappa != n.softKappa || o.bounceMode != n.bounceMode || o.bounces != n.bounces ||
                        o.convergence != n.convergence || o.maxBounces != n.maxBounces ||
                        o.bounceStepFactor != n.bounceStepFactor || o.bounceTrace != n.bounceTrace ||
-                       o.bounceRays != n.bounceRays || o.backsDark != n.backsDark || oc.stepFactor != nc.stepFactor ||
+                       o.bounceRays != n.bounceRays || o.backsDark != n.backsDark || o.edgeFaces != n.edgeFaces ||
+                       oc.stepFactor != nc.stepFactor ||
                        oc.minStepVoxels != nc.minStepVoxels || oc.maxDistance != nc.maxDistance ||
                        oc.firstSampleVoxels != nc.firstSampleVoxels || oc.clearance != nc.clearance ||
                        s.shadows != settings_.shadows || s.normalOffsetTexels != settings_.normalOffsetTexels ||
@@ -566,6 +568,10 @@ bool Renderer::applySettings(const RenderSettings& s) {
     const uint32_t scopes = timerScopes(s);
     if (scopes > timers_->capacity()) timers_ = std::make_unique<gpu::GpuTimers>(ctx_, scopes);
     if (light) {
+        if (rayData_) {
+            rayData_->edgeFaces = vxgi::edgeFacesLit(s.voxelLight);
+            rayData_->packed = false;
+        }
         uploadLights();
         updateFrameConstants();
         haveHistory_ = false;

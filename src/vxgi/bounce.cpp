@@ -67,8 +67,9 @@ gpu::ImageDesc tracedImageDesc(uint32_t slots) {
 }
 
 static_assert(sh::BOUNCE_RAY_NORMAL_SLOT_BYTES == sizeof(uint32_t), "rayNormalsImageDesc's texel is R32UI");
-static_assert(3 * sh::RAY_NORMAL_BITS <= 32 && sh::RAY_NORMAL_SCALE < float(1u << (sh::RAY_NORMAL_BITS - 1)),
-              "a packed ray normal's three axes fit one word");
+static_assert(3 * sh::RAY_NORMAL_BITS <= 30 && sh::RAY_NORMAL_SCALE < float(1u << (sh::RAY_NORMAL_BITS - 1)) &&
+                  sh::RAY_NORMAL_FACES_BIT == 1u << 30 && sh::RAY_NORMAL_EXTENTS_BIT == 1u << 31,
+              "a packed ray normal's three axes fit one word below its two flags");
 
 gpu::ImageDesc rayNormalsImageDesc(uint32_t slots) {
     return slotImageDesc(slots, VK_FORMAT_R32_UINT, "voxel rays' normals");
@@ -84,20 +85,23 @@ void addRayBindings(gpu::LayoutDesc& layout, const RayBindings& b) {
     layout.bindings.push_back({b.index, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
     layout.bindings.push_back({b.normals, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
     layout.bindings.push_back({b.occupancy, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    layout.bindings.push_back({b.extents, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
 }
 
 void trackRayReads(gpu::Tracker& tracker, const VoxelVolumes& v, const RayData& rays) {
     tracker.image(v.sides, gpu::use::ComputeRead)
         .image(rays.normals, gpu::use::ComputeRead)
         .buffer(v.index, gpu::use::BufferComputeRead)
-        .buffer(rays.occupancy, gpu::use::BufferComputeRead);
+        .buffer(rays.occupancy, gpu::use::BufferComputeRead)
+        .buffer(v.extents, gpu::use::BufferComputeRead);
 }
 
 void bindRays(gpu::Descriptors& d, const RayBindings& b, const VoxelVolumes& v, const RayData& rays) {
     d.storageImage(b.sides, v.sides.view())
         .storageBuffer(b.index, v.index.handle())
         .storageImage(b.normals, rays.normals.view())
-        .storageBuffer(b.occupancy, rays.occupancy.handle());
+        .storageBuffer(b.occupancy, rays.occupancy.handle())
+        .storageBuffer(b.extents, v.extents.handle());
 }
 
 BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
@@ -120,6 +124,7 @@ BouncePass::BouncePass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
     rays.bindings.push_back({sh::BIND_BOUNCE_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
     rays.bindings.push_back({sh::BIND_BOUNCE_RAY_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs});
     rays.bindings.push_back({sh::BIND_BOUNCE_RAY_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
+    rays.bindings.push_back({sh::BIND_BOUNCE_EXTENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs});
     rayNormalsPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayNormals), rays, "voxel bounce rays' normals");
     rayPipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceRayTrace), rays, "voxel bounce rays");
     rayShadePipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kBounceTraced), rays, "voxel bounce (rays' light)");
@@ -157,6 +162,7 @@ void BouncePass::recordRayNormals(VkCommandBuffer cmd, gpu::Tracker& tracker, co
     tracker.buffer(rd.occupancy, gpu::use::BufferComputeReadWrite)
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .image(v.accum, gpu::use::ComputeRead)
+        .buffer(v.extents, gpu::use::BufferComputeRead)
         .image(rd.normals, gpu::use::ComputeWrite)
         .flush(cmd);
     gpu::bind(cmd, rayNormalsPipeline_);
@@ -166,7 +172,11 @@ void BouncePass::recordRayNormals(VkCommandBuffer cmd, gpu::Tracker& tracker, co
         .storageBuffer(sh::BIND_BOUNCE_LIST, v.list.handle())
         .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rd.normals.view())
         .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rd.occupancy.handle())
+        .storageBuffer(sh::BIND_BOUNCE_EXTENTS, v.extents.handle())
         .push(ctx_, cmd, rayNormalsPipeline_);
+    sh::BouncePush push{};
+    push.flags = glm::uvec4(rd.edgeFaces ? 1u : 0u, 0u, 0u, 0u);
+    gpu::pushConstants(cmd, rayNormalsPipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
     tracker.image(rd.normals, gpu::use::ComputeRead).buffer(rd.occupancy, gpu::use::BufferComputeRead).flush(cmd);
     rd.packed = true;
@@ -200,7 +210,7 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         if (!traced_.handle() || traced_.desc().extent.height != want.extent.height) traced_ = gpu::Image(ctx_, want);
         tracker.flush(cmd);
         if (!rayData->packed) recordRayNormals(cmd, tracker, v, *rayData);
-        tracker.buffer(v.index, gpu::use::BufferComputeRead);
+        tracker.buffer(v.index, gpu::use::BufferComputeRead).buffer(v.extents, gpu::use::BufferComputeRead);
         // The rays read the radiance and side light that the shading pass after them writes.
         tracker.image(v.radiance, gpu::use::ComputeRead).image(v.sides, gpu::use::ComputeRead);
         tracker.image(traced_, gpu::use::ComputeWrite);
@@ -230,7 +240,8 @@ void BouncePass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         d.storageImage(sh::BIND_BOUNCE_TRACED, traced_.view())
             .storageBuffer(sh::BIND_BOUNCE_INDEX, v.index.handle())
             .storageImage(sh::BIND_BOUNCE_RAY_NORMALS, rayData->normals.view())
-            .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rayData->occupancy.handle());
+            .storageBuffer(sh::BIND_BOUNCE_RAY_OCCUPANCY, rayData->occupancy.handle())
+            .storageBuffer(sh::BIND_BOUNCE_EXTENTS, v.extents.handle());
     }
     const glm::uvec4 blend = history ? glm::uvec4(history->tag, history->previousTag,
                                                   std::bit_cast<uint32_t>(history->alpha), 0u)

@@ -54,6 +54,9 @@ struct RayData {
     // bounce, which packs them when this is false), cleared by whoever changes
     // the voxels. Within a frame the voxels do not change between bounces.
     bool packed = false;
+    // --edge-voxels faces: the packed words carry which voxels show their
+    // faces and their extents (set by the owner; repack when it changes).
+    bool edgeFaces = false;
     VkDeviceSize bytes() const { return normals.handle() ? normals.memorySize() + occupancy.size() : 0; }
 };
 
@@ -61,7 +64,7 @@ struct RayData {
 // lighting pass) binds besides the radiance volume, at its own binding
 // numbers: the side light, the slot index, the rays' normals and occupancy bits.
 struct RayBindings {
-    uint32_t sides, index, normals, occupancy;
+    uint32_t sides, index, normals, occupancy, extents;
 };
 void addRayBindings(gpu::LayoutDesc& layout, const RayBindings& b);
 // Declares the four as read by compute (before the caller's flush).

@@ -166,7 +166,8 @@ ClipScrollPass::ClipScrollPass(const gpu::Context& ctx) : ctx_(ctx) {
     layout.bindings = {{sh::BIND_SCROLL_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_SCROLL_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_SCROLL_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                       {sh::BIND_SCROLL_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                       {sh::BIND_SCROLL_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_SCROLL_EXTENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::ClipScrollPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kScroll), layout, "clipmap scroll");
@@ -176,7 +177,7 @@ void ClipScrollPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Vo
                             const glm::ivec3& oldMin, const glm::ivec3& newMin, gpu::GpuTimers* timers) const {
     gpu::GpuTimerScope timer(timers, cmd, kClipmapScrollTimer);
     tracker.image(v.accum, gpu::use::ComputeWrite).image(v.direct, gpu::use::ComputeWrite);
-    tracker.buffer(v.index, gpu::use::BufferComputeReadWrite);
+    tracker.buffer(v.index, gpu::use::BufferComputeReadWrite).buffer(v.extents, gpu::use::BufferComputeWrite);
     tracker.buffer(v.list, gpu::use::IndirectComputeReadWrite).flush(cmd);
     gpu::bind(cmd, pipeline_);
     gpu::Descriptors()
@@ -184,6 +185,7 @@ void ClipScrollPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Vo
         .storageImage(sh::BIND_SCROLL_DIRECT, v.direct.view())
         .storageBuffer(sh::BIND_SCROLL_INDEX, v.index.handle())
         .storageBuffer(sh::BIND_SCROLL_LIST, v.list.handle())
+        .storageBuffer(sh::BIND_SCROLL_EXTENTS, v.extents.handle())
         .push(ctx_, cmd, pipeline_);
     const sh::ClipScrollPush push{glm::ivec4(oldMin, int(v.grid.n)), glm::ivec4(newMin, int(v.grid.n))};
     gpu::pushConstants(cmd, pipeline_, VK_SHADER_STAGE_COMPUTE_BIT, push);

@@ -77,7 +77,7 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
                    s.shadowsRendered ? 1u : 0u),
         glm::vec4(settings.softKappa, settings.shadowNormalOffset, settings.emissionInRadiance ? 1.0f : 0.0f,
                   settings.keepSideReflection ? 1.0f : 0.0f),
-        glm::uvec4(settings.keepStaticRadiance ? 1u : 0u, 0u, 0u, 0u)};
+        glm::uvec4(settings.keepStaticRadiance ? 1u : 0u, edgeFacesLit(settings) ? 1u : 0u, 0u, 0u)};
     gpu::pushConstants(cmd, pipeline, VK_SHADER_STAGE_COMPUTE_BIT, push);
     dispatchOverList(cmd, v.list, offsetof(sh::VoxelListHeader, allGroups));
 }

@@ -73,7 +73,9 @@ std::vector<VolumeMemory> volumeMemory(uint32_t n, uint32_t slots, bool bounceRa
     for (uint64_t s = n / 2; s >= 1; s /= 2) directional += s * s * s * 8;
     std::vector<VolumeMemory> items = {
         {"voxel slot index", "uint32 buffer", n3 * 4},
-        {"voxel attributes (13 channels per slot)", "R32_SFLOAT", uint64_t(slots) * sh::VOXEL_CHANNELS * 4},
+        {"voxel attributes (" + std::to_string(sh::VOXEL_CHANNELS) + " channels per slot)", "R32_SFLOAT",
+         uint64_t(slots) * sh::VOXEL_CHANNELS * 4},
+        {"voxel extents (per slot)", "uint32 buffer", uint64_t(slots) * 4},
         {"voxel direct light (per slot)", "R16G16B16A16_SFLOAT", uint64_t(slots) * 8},
         {"voxel side light (per slot)", "R32G32B32A32_UINT", uint64_t(slots) * 16},
         {"radiance", "R16G16B16A16_SFLOAT", n3 * 8},
@@ -170,12 +172,17 @@ VoxelVolumes::VoxelVolumes(const gpu::Context& ctx, const GridSpec& g, uint32_t 
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                         gpu::MemoryUse::Device, "voxel slot index");
+    extents = gpu::Buffer(ctx, uint64_t(slots) * sizeof(uint32_t),
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          gpu::MemoryUse::Device, "voxel extents");
 
     // Everything starts zeroed and stays in GENERAL from here on; the list
     // starts empty with its capacity written once.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         recordEmptyList(cmd, list, slots);
         vkCmdFillBuffer(cmd, index.handle(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(cmd, extents.handle(), 0, VK_WHOLE_SIZE, 0);
         gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                            VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
@@ -202,7 +209,7 @@ void VoxelVolumes::setGrid(VkCommandBuffer cmd, gpu::Tracker& tracker, const Gri
 }
 
 uint64_t VoxelVolumes::ownBytes() const {
-    const uint64_t sparse = index.size() + accum.memorySize() + direct.memorySize() + sides.memorySize() + list.size();
+    const uint64_t sparse = index.size() + extents.size() + accum.memorySize() + direct.memorySize() + sides.memorySize() + list.size();
     return sparse + (sharesDense() ? 0 : dense_->bytes());
 }
 

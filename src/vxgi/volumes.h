@@ -108,13 +108,19 @@ public:
     gpu::Image accum;     // R32_SFLOAT, ROW x rows x VOXEL_CHANNELS: summed attributes per slot
     gpu::Image direct;    // RGBA16F, ROW x rows x 1: direct light + emission per slot, kept for the bounces; a = 1 + side code
     // RGBA32UI, ROW x rows x 1: a two-sided voxel's light per side, four
-    // RGB9E5 values (lib/voxel_sides.glsl); other slots' texels are unused.
+    // RGB9E5 values (lib/voxel_sides.glsl); with --edge-voxels faces an edge
+    // voxel's direct light per axis face and in all (lib/voxel_rays.glsl,
+    // facesSeen); other slots' texels are unused.
     gpu::Image sides;
     gpu::Image& radiance;     // DenseVolumes::radiance
     gpu::Image& directional;  // DenseVolumes::directional
     gpu::Buffer gridBuffer;                  // shader::VoxelGrid
     // uint32 per grid voxel (x fastest): slot + 1 | VOXEL_INDEX_STATIC, 0 = empty.
     gpu::Buffer index;
+    // uint32 per slot: which eighths of the voxel its surface reaches per
+    // axis (shared/voxel_data.h, VOXEL_EXTENT_*), OR-ed in by the compute
+    // voxelizer; 0 = not known (the whole voxel).
+    gpu::Buffer extents;
     // The occupied-voxel list (shared/voxel_list_pass.h): header, then one
     // packed coordinate per slot. Storage, indirect-dispatch arguments, fills.
     gpu::Buffer list;

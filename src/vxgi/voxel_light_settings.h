@@ -63,6 +63,14 @@ struct VoxelLightSettings {
     // meet its front (aniso_filter.comp, seenFront); off: every way, as the
     // paper filters (docs/quality.md, "A voxel seen from behind").
     bool backsDark = true;
+    // Edge and corner voxels as their faces (--edge-voxels faces): rays pass
+    // beside the part of a voxel its surface does not reach, and an edge
+    // voxel is lit and seen per axis face (docs/quality.md, "Surfaces' extent
+    // inside their voxels"). With Lambert only (normalWeighted off).
+    bool edgeFaces = false;
 };
+
+// Whether edge voxels are lit and shown as their faces with these settings.
+inline bool edgeFacesLit(const VoxelLightSettings& s) { return s.edgeFaces && !s.normalWeighted; }
 
 }  // namespace dvsgi::vxgi

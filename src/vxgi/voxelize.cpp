@@ -78,7 +78,8 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
                             {sh::BIND_CLEAR_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                             {sh::BIND_CLEAR_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                             {sh::BIND_CLEAR_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                            {sh::BIND_CLEAR_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                            {sh::BIND_CLEAR_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                            {sh::BIND_CLEAR_EXTENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     clearLayout.pushConstantBytes = sizeof(sh::ClearListedPush);
     clearLayout.pushConstantStages = cs;
     clear_ = gpu::Pipeline(ctx, gpu::Spirv(kClear), clearLayout, "clear listed voxels");
@@ -148,6 +149,7 @@ void Voxelizer::clearListed(VkCommandBuffer cmd, gpu::Tracker& tracker, const Vo
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)
         .buffer(v.index, gpu::use::BufferComputeWrite)
+        .buffer(v.extents, gpu::use::BufferComputeWrite)
         .buffer(v.list, gpu::use::IndirectComputeRead)
         .flush(cmd);
     gpu::bind(cmd, clear_);
@@ -158,6 +160,7 @@ void Voxelizer::clearListed(VkCommandBuffer cmd, gpu::Tracker& tracker, const Vo
         .storageImage(sh::BIND_CLEAR_DIRECT, v.direct.view())
         .storageImage(sh::BIND_CLEAR_RADIANCE, v.radiance.view())
         .storageBuffer(sh::BIND_CLEAR_INDEX, v.index.handle())
+        .storageBuffer(sh::BIND_CLEAR_EXTENTS, v.extents.handle())
         .push(ctx_, cmd, clear_);
     gpu::pushConstants(cmd, clear_, VK_SHADER_STAGE_COMPUTE_BIT, sh::ClearListedPush{glm::uvec4(scope, 0u, 0u, 0u)});
     dispatchOverList(cmd, v.list,

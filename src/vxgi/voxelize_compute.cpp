@@ -109,7 +109,8 @@ ComputeVoxelizer::ComputeVoxelizer(const gpu::Context& ctx, const gpuscene::Scen
                        {sh::BIND_VOXC_GROUPS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_TILES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_VOXC_INDIRECT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
-                       {sh::BIND_VOXC_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
+                       {sh::BIND_VOXC_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
+                       {sh::BIND_VOXC_EXTENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::VoxelizeComputePush);
     layout.pushConstantStages = cs;
@@ -182,6 +183,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
 
     tracker.image(v.accum, gpu::use::ComputeReadWrite)
         .buffer(v.index, gpu::use::BufferComputeReadWrite)
+        .buffer(v.extents, gpu::use::BufferComputeReadWrite)
         .buffer(indirect_, compute, readWrite)
         .buffer(tiles_, compute, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT)
         .buffer(v.list, gpu::use::BufferComputeReadWrite)
@@ -193,6 +195,7 @@ void ComputeVoxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, cons
         .storageBuffer(sh::BIND_VOXC_MATERIALS, scene.materials.handle())
         .storageImage(sh::BIND_VOXC_ACCUM, v.accum.view())
         .storageBuffer(sh::BIND_VOXC_INDEX, v.index.handle())
+        .storageBuffer(sh::BIND_VOXC_EXTENTS, v.extents.handle())
         .storageBuffer(sh::BIND_VOXC_VERTICES, scene.vertices.handle())
         .storageBuffer(sh::BIND_VOXC_INDICES, scene.indices.handle())
         .storageBuffer(sh::BIND_VOXC_GROUPS, groupTable->handle())

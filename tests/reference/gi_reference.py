@@ -26,6 +26,8 @@ ITEM1 = ["--bounces", "32"]  # issue #15 item 1's own case, also held to its +-3
 CASES = [("cornell-lights", [], 0.0480, 1.0182),
          ("cornell-lights", ITEM1, 0.0487, 1.0199),
          ("cornell-emissive", [], 0.1519, 0.9869),
+         ("cornell-lights", ["--edge-voxels", "faces"], 0.0462, 1.0120),
+         ("cornell-emissive", ["--edge-voxels", "faces"], 0.1516, 0.9849),
          ("cornell-lights", ["--gather-trace", "cones"], 0.0955, 1.0104),
          ("cornell-emissive", ["--gather-trace", "cones"], 0.1529, 0.9825),
          ("cornell-lights", ["--gather-trace", "cones", "--bounce-trace", "cones"], 0.1252, 0.9190),

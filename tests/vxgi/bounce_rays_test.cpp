@@ -3,7 +3,9 @@
 // (32^3), its radiance read back before the bounce, and for every inner wall
 // voxel the rays the shader casts (same directions, same start, same rule for
 // the voxel's own surface) walked voxel by voxel through that radiance. What
-// one bounce adds to each voxel must be albedo times their mean.
+// one bounce adds to each voxel must be albedo times their mean. With
+// --edge-voxels faces the same, the rays passing beside the part of the box's
+// edge voxels its walls do not reach and seeing those voxels' faces.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,6 +18,7 @@
 #include "ray_march.h"
 #include "vox_helper.h"
 #include "vxgi/voxel_light_settings.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 namespace {
@@ -41,7 +44,8 @@ glm::vec3 wallNormal(glm::ivec3 c) {
 
 // voxelRaysCosine's mean over its rays: R2 directions shifted per voxel,
 // cosine-distributed about n, from one voxel off the voxel's centre.
-float cpuRays(const Rgba16Volume& radiance, const VoxelReadback& attributes, glm::ivec3 v, glm::vec3 n) {
+float cpuRays(const Rgba16Volume& radiance, const VoxelReadback& attributes, glm::ivec3 v, glm::vec3 n,
+              const EdgeModel* edges = nullptr) {
     const uint32_t seed = shader::raySeed(v);
     const glm::vec3 origin = glm::vec3(v) + 0.5f + n;
     // The voxel's own surface: its wall's layer, by the walls' own normals.
@@ -51,20 +55,61 @@ float cpuRays(const Rgba16Volume& radiance, const VoxelReadback& attributes, glm
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
     double sum = 0.0;
     for (uint32_t i = 0; i < kRays; ++i)
-        sum += marchRay(radiance, origin, cosineRay(n, seed, i), own, normalAt, RayStart::Voxel).r;
+        sum += marchRay(radiance, origin, cosineRay(n, seed, i), own, normalAt, RayStart::Voxel, true, nullptr, edges).r;
     return float(sum / kRays);
 }
 
-Rgba16Volume radianceAfter(const scene::Scene& s, uint32_t bounces, VoxelReadback* attributes = nullptr) {
+// What the rays read besides the radiance: the attributes, and with
+// --edge-voxels faces the extents and the side light (the faces' light).
+struct RayInputs {
+    VoxelReadback attributes;
+    std::vector<uint32_t> extents;
+    std::vector<glm::uvec4> sides;
+};
+
+Rgba16Volume radianceAfter(const scene::Scene& s, uint32_t bounces, RayInputs* inputs = nullptr,
+                           bool edgeFaces = false) {
     render::RenderSettings rs = unitBoxGridSettings(kN, 256);
     rs.voxelLight.bounceTrace = vxgi::BounceTrace::Rays;
     rs.voxelLight.bounceRays = kRays;
     rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
     rs.voxelLight.bounces = bounces;
+    rs.voxelLight.edgeFaces = edgeFaces;
+    rs.voxelizer = vxgi::VoxelizerKind::Compute;  // the extents' voxelizer
     render::Renderer r(context(), s, rs);
     r.renderFrame();
-    if (attributes) *attributes = readVoxels(*r.volumes());
+    if (inputs) {
+        inputs->attributes = readVoxels(*r.volumes());
+        inputs->extents = readExtents(*r.volumes());
+        inputs->sides = vxgi::readSideLight(context(), *r.volumes());
+    }
     return readRgba16(r.volumes()->radiance);
+}
+
+// lib/voxel_attributes.glsl's voxelShowsFaces from the read-back sums.
+bool showsFaces(const VoxelReadback& a, glm::ivec3 c) {
+    glm::dvec3 pos, neg, first;
+    for (int k = 0; k < 3; ++k) {
+        pos[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_POS_X + 2 * k);
+        neg[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_NEG_X + 2 * k);
+        first[k] = a.average(c.x, c.y, c.z, shader::CH_FIRST_X + k);
+        if (std::min(pos[k], neg[k]) >= shader::TWO_SIDED_MIN_WEIGHT) return false;
+    }
+    const double lp = glm::length(glm::sqrt(pos) - glm::sqrt(neg)), la = glm::length(pos - neg),
+                 lm = glm::length(first);
+    const double share = lp - la > 1e-3 ? std::clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
+    return share < 0.99;
+}
+
+// lib/voxel_rays.glsl's facesSeen: the reflected light, and each face's
+// direct light weighted by how much it turns toward the ray.
+glm::vec3 facesSeen(const RayInputs& in, glm::ivec3 c, glm::vec3 nc, glm::vec3 d, glm::vec4 r) {
+    const glm::uvec4 t = in.sides[voxelIndex(kN, c.x, c.y, c.z)];
+    const glm::vec3 reflected = glm::max(glm::vec3(r) - vxgi::unpackRgb9e5(t.w), glm::vec3(0.0f));
+    const glm::vec3 w = nc * nc * glm::max(-d * glm::sign(nc), glm::vec3(0.0f));
+    const float total = w.x + w.y + w.z;
+    if (total < 1e-6f) return reflected;
+    return reflected + (w.x * vxgi::unpackRgb9e5(t.x) + w.y * vxgi::unpackRgb9e5(t.y) + w.z * vxgi::unpackRgb9e5(t.z)) / total;
 }
 
 class BounceRays : public GpuTest {};
@@ -73,8 +118,9 @@ TEST_F(BounceRays, MatchTheSameRaysMarchedOnTheCpu) {
     scene::Scene s;
     addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf, true);
     addTopDownCamera(s, 0.0f, 1.0f);
-    VoxelReadback attributes;
-    const Rgba16Volume before = radianceAfter(s, 0, &attributes), after = radianceAfter(s, 1);
+    RayInputs in;
+    const Rgba16Volume before = radianceAfter(s, 0, &in), after = radianceAfter(s, 1);
+    const VoxelReadback& attributes = in.attributes;
     double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
     int count = 0;
     forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
@@ -89,6 +135,44 @@ TEST_F(BounceRays, MatchTheSameRaysMarchedOnTheCpu) {
     std::printf("  %d wall voxels: reflected light GPU %.5f, CPU %.5f (%+.3f%%); worst voxel off by %.4f\n", count,
                 sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
     ASSERT_GT(count, 1000);
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
+    EXPECT_LT(worst, 0.02);
+}
+
+TEST_F(BounceRays, EdgeFacesMatchTheSameRaysMarchedOnTheCpu) {
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf, true);
+    addTopDownCamera(s, 0.0f, 1.0f);
+    RayInputs in;
+    const Rgba16Volume before = radianceAfter(s, 0, &in, true), after = radianceAfter(s, 1, nullptr, true);
+    const EdgeModel edges{[&](glm::ivec3 c) { return in.extents[voxelIndex(kN, c.x, c.y, c.z)]; },
+                          [&](glm::ivec3 c) { return showsFaces(in.attributes, c); },
+                          [&](glm::ivec3 c, glm::vec3 nc, glm::vec3 d, glm::vec4 r) { return facesSeen(in, c, nc, d, r); }};
+    int faceVoxels = 0, partial = 0;
+    for (int z = 0; z < int(kN); ++z)
+        for (int y = 0; y < int(kN); ++y)
+            for (int x = 0; x < int(kN); ++x) {
+                if (in.attributes.count(x, y, z) <= 0.0f) continue;
+                faceVoxels += showsFaces(in.attributes, glm::ivec3(x, y, z));
+                const uint32_t e = in.extents[voxelIndex(kN, x, y, z)];
+                partial += e != 0u && e != shader::VOXEL_EXTENT_ALL;
+            }
+    double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
+    int count = 0;
+    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
+        if (v.y == kHigh) return;
+        const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
+        const float cpu = kRho * cpuRays(before, in.attributes, v, wallNormal(v), &edges);
+        sumGpu += gpu;
+        sumCpu += cpu;
+        worst = std::max(worst, double(std::fabs(gpu - cpu)));
+        ++count;
+    });
+    std::printf("  %d voxels show faces, %d reached in part; %d wall voxels: reflected light GPU %.5f, CPU %.5f "
+                "(%+.3f%%); worst voxel off by %.4f\n",
+                faceVoxels, partial, count, sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
+    ASSERT_GT(faceVoxels, 100) << "the box's edges";
+    ASSERT_GT(partial, 1000) << "its walls lie in the middle of their voxels";
     EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
     EXPECT_LT(worst, 0.02);
 }

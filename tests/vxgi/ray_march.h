@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -39,6 +40,53 @@ inline bool rayPassesInFront(glm::ivec3 c, glm::vec3 nc, glm::vec3 p, glm::vec3 
     return t + ahead / along > tExit;
 }
 
+// --edge-voxels faces as the rays see it: each voxel's extents (the extents
+// buffer's word, 0 = not known) and, for a voxel that shows its faces, what a
+// ray along d sees of it given its radiance texel (facesSeen).
+struct EdgeModel {
+    std::function<uint32_t(glm::ivec3)> extents;
+    std::function<bool(glm::ivec3)> showsFaces;
+    std::function<glm::vec3(glm::ivec3, glm::vec3 nc, glm::vec3 d, glm::vec4 r)> facesSeen;
+};
+
+// passesBeside: the ray p + d t, inside voxel c (leaving it at tExit), misses
+// the box its extents give: for a plane along an axis where it crosses the
+// plane through c's centre (or where it enters, if it does not cross it in c),
+// otherwise anywhere along its path through c.
+inline bool rayPassesBeside(glm::ivec3 c, glm::vec3 nc, uint32_t bits, glm::vec3 p, glm::vec3 d, float t, float tExit) {
+    if (bits == 0u || bits == shader::VOXEL_EXTENT_ALL) return false;
+    glm::vec3 lo, hi;
+    for (int k = 0; k < 3; ++k) {
+        uint32_t m = (bits >> (shader::VOXEL_EXTENT_STEPS * k)) & 0xffu;
+        if (m == 0u) m = 0xffu;
+        int first = 0, last = 7;
+        while (!(m & (1u << first))) ++first;
+        while (!(m & (1u << last))) --last;
+        lo[k] = float(c[k]) + float(first) / 8.0f;
+        hi[k] = float(c[k]) + float(last + 1) / 8.0f;
+    }
+    const glm::vec3 m = glm::abs(nc);
+    if (std::max({m.x, m.y, m.z}) >= 0.98f) {
+        const int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+        const float tp = std::fabs(d[a]) > 1e-7f ? (float(c[a]) + 0.5f - p[a]) / d[a] : -1.0f;
+        const glm::vec3 q = p + d * (tp >= t && tp <= tExit ? tp : t);
+        for (int k = 0; k < 3; ++k)
+            if (k != a && (q[k] < lo[k] - 1e-4f || q[k] > hi[k] + 1e-4f)) return true;
+        return false;
+    }
+    float enter = t, leave = tExit;
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0.0f) {
+            if (p[k] < lo[k] || p[k] > hi[k]) return true;
+            continue;
+        }
+        const float t0 = (lo[k] - p[k]) / d[k], t1 = (hi[k] - p[k]) / d[k];
+        enter = std::max(enter, std::min(t0, t1));
+        leave = std::min(leave, std::max(t0, t1));
+    }
+    return enter > leave + 1e-4f;
+}
+
 // Where a ray starts: a voxel's rays that start inside another surface's voxel
 // meet its back (no light); a pixel's pass that voxel when they move away from
 // its plane and start in front of it (up to half a voxel behind it for a
@@ -54,9 +102,10 @@ enum class RayStart { Voxel, Pixel };
 // (seenFromFront in lib/voxel_sides.glsl).
 // `tHit` (optional) receives where the ray entered the voxel it stopped at
 // (infinity where it left the grid), as ambient occlusion weighs it.
+// `edges` (optional): --edge-voxels faces.
 template <typename Own, typename NormalAt>
 glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&& own, NormalAt&& normalAt,
-                   RayStart start, bool backsDark = true, float* tHit = nullptr) {
+                   RayStart start, bool backsDark = true, float* tHit = nullptr, const EdgeModel* edges = nullptr) {
     const int n = int(radiance.n);
     glm::ivec3 c = glm::ivec3(glm::floor(p));
     glm::ivec3 step(0);
@@ -78,7 +127,8 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
             if (c[a] < 0 || c[a] >= n) return glm::vec3(0.0f);
         const glm::vec4 r = radiance.at(c.x, c.y, c.z);
         const int a = tMax.x <= tMax.y && tMax.x <= tMax.z ? 0 : (tMax.y <= tMax.z ? 1 : 2);
-        if (r.a > 0.0f && !own(c) && !beside(c, normalAt(c))) {
+        const bool passes = r.a > 0.0f && edges && rayPassesBeside(c, normalAt(c), edges->extents(c), p, d, t, tMax[a]);
+        if (r.a > 0.0f && !own(c) && !beside(c, normalAt(c)) && !(passes && !(first && start == RayStart::Pixel))) {
             const glm::vec3 nc = normalAt(c);
             if (tHit) *tHit = t;
             if (first && start == RayStart::Voxel) return glm::vec3(0.0f);
@@ -88,9 +138,11 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
                 besideAt = glm::vec3(c) + 0.5f;
                 besideN = nc;
             }
-            if (leaves || rayPassesInFront(c, nc, p, d, t, tMax[a])) {
+            if (leaves || rayPassesInFront(c, nc, p, d, t, tMax[a]) || passes) {
                 if (tHit) *tHit = INFINITY;
             } else {
+                // A voxel that shows its faces weighs them itself, unfaded.
+                if (edges && r.a >= 1.0f && edges->showsFaces(c)) return edges->facesSeen(c, nc, d, r);
                 if (!backsDark || r.a < 1.0f) return glm::vec3(r);  // two-sided voxels (r.a < 1): not modelled here
                 const float fade = (shader::VOXEL_BACK_FADE_END - glm::dot(nc, d)) /
                                    (shader::VOXEL_BACK_FADE_END - shader::VOXEL_BACK_FADE_START);

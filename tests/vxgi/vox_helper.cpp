@@ -21,6 +21,19 @@ VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes) {
     return VoxelReadback{vxgi::readAttributes(context(), volumes)};
 }
 
+std::vector<uint32_t> readExtents(const vxgi::VoxelVolumes& v) {
+    const std::vector<uint8_t> index = gpu::readbackBuffer(context(), v.index);
+    const std::vector<uint8_t> extents = gpu::readbackBuffer(context(), v.extents);
+    std::vector<uint32_t> out(size_t(v.grid.n) * v.grid.n * v.grid.n, 0u);
+    for (size_t i = 0; i < out.size(); ++i) {
+        uint32_t value = 0;
+        std::memcpy(&value, index.data() + 4 * i, 4);
+        const uint32_t slot1 = shader::indexSlot(value);
+        if (slot1 != 0) std::memcpy(&out[i], extents.data() + 4 * size_t(slot1 - 1), 4);
+    }
+    return out;
+}
+
 std::string voxelizerTestName(const ::testing::TestParamInfo<vxgi::VoxelizerKind>& info) {
     return vxgi::voxelizerName(info.param);
 }

@@ -30,6 +30,8 @@ struct VoxelReadback : vxgi::DenseAttributes {
 };
 
 VoxelReadback readVoxels(const vxgi::VoxelVolumes& volumes);
+// Per grid voxel (x fastest): its slot's extents (shared/voxel_data.h), 0 for an empty voxel.
+std::vector<uint32_t> readExtents(const vxgi::VoxelVolumes& volumes);
 
 // Both voxelizers, for tests parametrized over them, and their test names.
 inline constexpr vxgi::VoxelizerKind kVoxelizers[] = {vxgi::VoxelizerKind::Geometry, vxgi::VoxelizerKind::Compute};
