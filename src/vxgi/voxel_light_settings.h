@@ -65,9 +65,11 @@ struct VoxelLightSettings {
     bool backsDark = true;
     // Edge and corner voxels as their faces (--edge-voxels faces): rays pass
     // beside the part of a voxel its surface does not reach, and an edge
-    // voxel is lit and seen per axis face (docs/quality.md, "Surfaces' extent
-    // inside their voxels"). With Lambert only (normalWeighted off).
-    bool edgeFaces = false;
+    // voxel is lit and seen per axis face. Whole voxels fattened each edge by
+    // half a voxel, lit both faces of an edge alike and took cornell-lights
+    // above its reference (docs/quality.md, "--edge-voxels faces"). With
+    // Lambert only (normalWeighted off).
+    bool edgeFaces = true;
 };
 
 // Whether edge voxels are lit and shown as their faces with these settings.

@@ -86,32 +86,6 @@ Rgba16Volume radianceAfter(const scene::Scene& s, uint32_t bounces, RayInputs* i
     return readRgba16(r.volumes()->radiance);
 }
 
-// lib/voxel_attributes.glsl's voxelShowsFaces from the read-back sums.
-bool showsFaces(const VoxelReadback& a, glm::ivec3 c) {
-    glm::dvec3 pos, neg, first;
-    for (int k = 0; k < 3; ++k) {
-        pos[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_POS_X + 2 * k);
-        neg[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_NEG_X + 2 * k);
-        first[k] = a.average(c.x, c.y, c.z, shader::CH_FIRST_X + k);
-        if (std::min(pos[k], neg[k]) >= shader::TWO_SIDED_MIN_WEIGHT) return false;
-    }
-    const double lp = glm::length(glm::sqrt(pos) - glm::sqrt(neg)), la = glm::length(pos - neg),
-                 lm = glm::length(first);
-    const double share = lp - la > 1e-3 ? std::clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
-    return share < 0.99;
-}
-
-// lib/voxel_rays.glsl's facesSeen: the reflected light, and each face's
-// direct light weighted by how much it turns toward the ray.
-glm::vec3 facesSeen(const RayInputs& in, glm::ivec3 c, glm::vec3 nc, glm::vec3 d, glm::vec4 r) {
-    const glm::uvec4 t = in.sides[voxelIndex(kN, c.x, c.y, c.z)];
-    const glm::vec3 reflected = glm::max(glm::vec3(r) - vxgi::unpackRgb9e5(t.w), glm::vec3(0.0f));
-    const glm::vec3 w = nc * nc * glm::max(-d * glm::sign(nc), glm::vec3(0.0f));
-    const float total = w.x + w.y + w.z;
-    if (total < 1e-6f) return reflected;
-    return reflected + (w.x * vxgi::unpackRgb9e5(t.x) + w.y * vxgi::unpackRgb9e5(t.y) + w.z * vxgi::unpackRgb9e5(t.z)) / total;
-}
-
 class BounceRays : public GpuTest {};
 
 TEST_F(BounceRays, MatchTheSameRaysMarchedOnTheCpu) {
@@ -145,9 +119,7 @@ TEST_F(BounceRays, EdgeFacesMatchTheSameRaysMarchedOnTheCpu) {
     addTopDownCamera(s, 0.0f, 1.0f);
     RayInputs in;
     const Rgba16Volume before = radianceAfter(s, 0, &in, true), after = radianceAfter(s, 1, nullptr, true);
-    const EdgeModel edges{[&](glm::ivec3 c) { return in.extents[voxelIndex(kN, c.x, c.y, c.z)]; },
-                          [&](glm::ivec3 c) { return showsFaces(in.attributes, c); },
-                          [&](glm::ivec3 c, glm::vec3 nc, glm::vec3 d, glm::vec4 r) { return facesSeen(in, c, nc, d, r); }};
+    const EdgeModel edges = edgeModel(in.attributes, in.extents, in.sides);
     int faceVoxels = 0, partial = 0;
     for (int z = 0; z < int(kN); ++z)
         for (int y = 0; y < int(kN); ++y)

@@ -83,6 +83,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     const image::ImageRGBA32F img = r.readOutput();
     const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
     const VoxelReadback attributes = readVoxels(*r.volumes());
+    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes);
     const float voxel = 2.0f / float(kN);
     const glm::vec3 n(0.0f, 1.0f, 0.0f);
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
@@ -108,7 +109,9 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
-                cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel).r;
+                cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel, true,
+                                nullptr, &edges)
+                           .r;
             cpu /= kRays;
             const double gpu = img.at(x, y)[0];
             sumGpu += gpu;
@@ -170,6 +173,7 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
         const image::ImageRGBA32F img = r.readOutput();
         const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
         const VoxelReadback attributes = readVoxels(*r.volumes());
+        const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes);
         const glm::vec3 up(0.0f, 1.0f, 0.0f);
         const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
         double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
@@ -184,7 +188,7 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
                 for (uint32_t i = 0; i < kRays; ++i) {
                     float t = INFINITY;
                     marchRay(radiance, p + up * kOffset, cosineRay(up, seed, i), own, normalAt, RayStart::Pixel, true,
-                             &t);
+                             &t, &edges);
                     if (std::isfinite(t)) occlusion += 1.0 / (1.0 + lambda * t);
                 }
                 const double cpu = occlusion / kRays, gpu = 1.0 - img.at(x, y)[0];

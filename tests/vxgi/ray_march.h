@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -14,6 +16,7 @@
 #include "shared/bounce_pass.h"
 #include "shared/voxel_data.h"
 #include "vox_helper.h"
+#include "vxgi/voxel_storage_io.h"
 
 namespace dvsgi::test {
 
@@ -48,6 +51,52 @@ struct EdgeModel {
     std::function<bool(glm::ivec3)> showsFaces;
     std::function<glm::vec3(glm::ivec3, glm::vec3 nc, glm::vec3 d, glm::vec4 r)> facesSeen;
 };
+
+// lib/voxel_attributes.glsl's voxelShowsFaces from the read-back sums.
+inline bool showsFaces(const VoxelReadback& a, glm::ivec3 c) {
+    glm::dvec3 pos, neg, first;
+    for (int k = 0; k < 3; ++k) {
+        pos[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_POS_X + 2 * k);
+        neg[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_NEG_X + 2 * k);
+        first[k] = a.average(c.x, c.y, c.z, shader::CH_FIRST_X + k);
+        if (std::min(pos[k], neg[k]) >= shader::TWO_SIDED_MIN_WEIGHT) return false;
+    }
+    const double lp = glm::length(glm::sqrt(pos) - glm::sqrt(neg)), la = glm::length(pos - neg),
+                 lm = glm::length(first);
+    const double share = lp - la > 1e-3 ? std::clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
+    return share < 0.99;
+}
+
+// lib/voxel_rays.glsl's facesSeen, from a voxel's side texel t: its reflected
+// light, and each face's direct light weighted by how much it turns toward the ray.
+inline glm::vec3 facesSeen(glm::uvec4 t, glm::vec3 nc, glm::vec3 d, glm::vec4 r) {
+    const glm::vec3 reflected = glm::max(glm::vec3(r) - vxgi::unpackRgb9e5(t.w), glm::vec3(0.0f));
+    const glm::vec3 w = nc * nc * glm::max(-d * glm::sign(nc), glm::vec3(0.0f));
+    const float total = w.x + w.y + w.z;
+    if (total < 1e-6f) return reflected;
+    return reflected +
+           (w.x * vxgi::unpackRgb9e5(t.x) + w.y * vxgi::unpackRgb9e5(t.y) + w.z * vxgi::unpackRgb9e5(t.z)) / total;
+}
+
+// The model from what was read back: the attribute sums, the extents and the
+// side light per grid voxel (readExtents, vxgi::readSideLight). The model
+// keeps copies.
+inline EdgeModel edgeModel(const VoxelReadback& attributes, std::vector<uint32_t> extents,
+                           std::vector<glm::uvec4> sides) {
+    const uint32_t n = attributes.n;
+    auto e = std::make_shared<std::vector<uint32_t>>(std::move(extents));
+    auto s = std::make_shared<std::vector<glm::uvec4>>(std::move(sides));
+    auto a = std::make_shared<VoxelReadback>(attributes);
+    return {[e, n](glm::ivec3 c) { return (*e)[voxelIndex(n, c.x, c.y, c.z)]; },
+            [a](glm::ivec3 c) { return showsFaces(*a, c); },
+            [s, n](glm::ivec3 c, glm::vec3 nc, glm::vec3 d, glm::vec4 r) {
+                return facesSeen((*s)[voxelIndex(n, c.x, c.y, c.z)], nc, d, r);
+            }};
+}
+// The same, read from the volumes.
+inline EdgeModel edgeModel(const gpu::Context& ctx, const vxgi::VoxelVolumes& v, const VoxelReadback& attributes) {
+    return edgeModel(attributes, readExtents(v), vxgi::readSideLight(ctx, v));
+}
 
 // passesBeside: the ray p + d t, inside voxel c (leaving it at tExit), misses
 // the box its extents give: for a plane along an axis where it crosses the
