@@ -427,9 +427,9 @@ std::vector<Setting> imageAndVoxels() {
              "off"),
         with(choice({"edge-voxels", kVoxelLight, "whole|faces", "",
                      "voxels that hold an edge or a corner: whole = a cube lit with the mean normal, as every "
-                     "voxel; faces = rays pass beside the part of a voxel its surface does not reach (the compute "
-                     "voxelizer's triangle boxes; other voxelizers: whole voxels), and an edge's faces are lit "
-                     "and shown one by one (with --normal-weighted off)",
+                     "voxel; faces = rays pass beside the part of a voxel its surface does not reach (its "
+                     "triangles' boxes; --voxelizer pv: whole voxels), and an edge's faces are lit and shown one "
+                     "by one (with --normal-weighted off)",
                      kAll, kFrame},
                     {{"whole", false}, {"faces", true}}, FIELD(settings.voxelLight.edgeFaces)),
              "whole"),

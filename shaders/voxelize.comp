@@ -172,10 +172,8 @@ void addSample(ivec3 voxel, ivec3 q) {
     uint slot1 = accumulateFragment(voxel, pc.ids.z, base.rgb, emission, n);
     if (slot1 == 0u) return;
     // Where in the voxel the triangle can be: its bounding box, per axis.
-    vec3 lo = min(t.p[0], min(t.p[1], t.p[2])) - vec3(voxel), hi = max(t.p[0], max(t.p[1], t.p[2])) - vec3(voxel);
-    uint bits = 0u;
-    for (uint k = 0u; k < 3u; ++k) bits |= voxelExtentAxisBits(lo[k], hi[k]) << (VOXEL_EXTENT_STEPS * k);
-    atomicOr(voxelExtents[slot1 - 1u], bits);
+    vec3 lo = min(t.p[0], min(t.p[1], t.p[2])), hi = max(t.p[0], max(t.p[1], t.p[2]));
+    atomicOr(voxelExtents[slot1 - 1u], voxelExtentBits(lo - vec3(voxel), hi - vec3(voxel)));
 }
 
 // The candidate layers of a column: those the plane crosses over the closed

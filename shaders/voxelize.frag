@@ -12,6 +12,7 @@ layout(set = 0, binding = BIND_VOX_MATERIALS, std430) readonly buffer Materials 
 layout(set = 0, binding = BIND_VOX_ACCUM, r32f) uniform coherent image3D accum;
 VOXEL_INDEX_BLOCK(BIND_VOX_INDEX, coherent);
 VOXEL_LIST_BLOCK(BIND_VOX_LIST, );
+VOXEL_EXTENTS_BLOCK(BIND_VOX_EXTENTS, );
 layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[MAX_TEXTURES];
 layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
 layout(push_constant) uniform Push { VoxelizePush pc; };
@@ -28,6 +29,9 @@ layout(location = 4) flat in vec4 inAabb;
 layout(location = 5) flat in vec3 inTri[3];
 
 ivec3 unswizzle(ivec3 p, uint axis) {
+    return axis == 0u ? p.zxy : (axis == 1u ? p.yzx : p.xyz);
+}
+vec3 unswizzle(vec3 p, uint axis) {
     return axis == 0u ? p.zxy : (axis == 1u ? p.yzx : p.xyz);
 }
 
@@ -83,8 +87,12 @@ void main() {
     // marks the voxels on both sides.
     int N = int(grid.dims.x);
     int first = max(int(floor(depth.x - 1e-4)), 0), last = min(int(floor(depth.y + 1e-4)), N - 1);
+    // Where in its voxels the triangle can be: its bounding box (the extents, as voxelize.comp ORs them).
+    vec3 lo = unswizzle(min(inTri[0], min(inTri[1], inTri[2])), inAxis);
+    vec3 hi = unswizzle(max(inTri[0], max(inTri[1], inTri[2])), inAxis);
     for (int layer = first; layer <= last; ++layer) {
         ivec3 voxel = unswizzle(ivec3(column, layer), inAxis);
-        accumulateFragment(voxel, pc.mode.x, base.rgb, emission, n);
+        uint slot1 = accumulateFragment(voxel, pc.mode.x, base.rgb, emission, n);
+        if (slot1 != 0u) atomicOr(voxelExtents[slot1 - 1u], voxelExtentBits(lo - vec3(voxel), hi - vec3(voxel)));
     }
 }

@@ -96,7 +96,7 @@ void extentBox(ivec3 c, uint bits, out vec3 lo, out vec3 hi) {
 // to rays, and each edge stands half a voxel out (docs/quality.md, "Surfaces'
 // extent inside their voxels").
 bool passesBeside(ivec3 c, vec3 nc, uint bits, vec3 p, vec3 d, vec3 inv, float t) {
-    if (bits == 0u || bits == VOXEL_EXTENT_ALL) return false;  // not known (not the compute voxelizer's), or all
+    if (bits == 0u || bits == VOXEL_EXTENT_ALL) return false;  // not known (the pv voxelizer's), or all
     vec3 lo, hi;
     extentBox(c, bits, lo, hi);
     float tExit = exitDistance(p, inv, vec3(c), 1.0);

@@ -45,8 +45,9 @@ DVSGI_CONST(uint, VOXEL_CHANNELS, 16);
 // The part of its voxel a surface covers (--edge-voxels faces). Per slot, one
 // uint in the extents buffer (VOXEL_EXTENTS_BLOCK): per axis a (bits 8a to
 // 8a + 7) bit k is set when a triangle that gave the voxel a sample has its
-// bounding box reach [k/8, (k+1)/8) of the voxel along a. The compute
-// voxelizer ORs them in; the other voxelizers leave 0, read as the whole voxel.
+// bounding box reach [k/8, (k+1)/8) of the voxel along a. The compute and
+// geometry-shader voxelizers OR them in; the pv voxelizer, which sees pixels,
+// not triangles, leaves 0, read as the whole voxel.
 DVSGI_CONST(uint, VOXEL_EXTENT_STEPS, 8);
 DVSGI_CONST(uint, VOXEL_EXTENT_ALL, 0xffffffu);
 // One axis's bits for a box from lo to hi along it, in voxels from the
@@ -58,6 +59,12 @@ DVSGI_FUNCTION uint voxelExtentAxisBits(float lo, float hi) {
     int b = fb <= 1.0f ? 0 : (fb >= 8.0f ? 7 : (float(int(fb)) == fb ? int(fb) - 1 : int(fb)));
     if (b < a) b = a;
     return ((2u << uint(b)) - 1u) & ~((1u << uint(a)) - 1u);
+}
+// A box's bits on all three axes, lo and hi relative to the voxel's low corner.
+DVSGI_FUNCTION uint voxelExtentBits(vec3 lo, vec3 hi) {
+    uint bits = 0u;
+    for (int k = 0; k < 3; ++k) bits |= voxelExtentAxisBits(lo[k], hi[k]) << (VOXEL_EXTENT_STEPS * uint(k));
+    return bits;
 }
 
 // Thin walls. A voxel whose normal weights hold both signs of one axis (each

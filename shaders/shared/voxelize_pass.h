@@ -26,6 +26,7 @@ DVSGI_CONST(uint, BIND_VOX_MATERIALS, 2);
 DVSGI_CONST(uint, BIND_VOX_ACCUM, 3);
 DVSGI_CONST(uint, BIND_VOX_INDEX, 4);  // slot index volume (claimed)
 DVSGI_CONST(uint, BIND_VOX_LIST, 5);  // occupied-voxel list (a claimed slot appends its voxel)
+DVSGI_CONST(uint, BIND_VOX_EXTENTS, 6);  // per-slot extents (voxel_data.h), OR-ed into
 
 // Clearing listed voxels (clear_listed.comp): over the list's dynamic entries,
 // or over every entry (VOXEL_LIST_GROUP per workgroup).

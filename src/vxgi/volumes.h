@@ -118,8 +118,8 @@ public:
     // uint32 per grid voxel (x fastest): slot + 1 | VOXEL_INDEX_STATIC, 0 = empty.
     gpu::Buffer index;
     // uint32 per slot: which eighths of the voxel its surface reaches per
-    // axis (shared/voxel_data.h, VOXEL_EXTENT_*), OR-ed in by the compute
-    // voxelizer; 0 = not known (the whole voxel).
+    // axis (shared/voxel_data.h, VOXEL_EXTENT_*), OR-ed in by the compute and
+    // geometry-shader voxelizers; 0 = not known (the whole voxel: pv).
     gpu::Buffer extents;
     // The occupied-voxel list (shared/voxel_list_pass.h): header, then one
     // packed coordinate per slot. Storage, indirect-dispatch arguments, fills.

@@ -108,7 +108,8 @@ Voxelizer::Voxelizer(const gpu::Context& ctx, const gpuscene::SceneGpu& scene, b
                        {sh::BIND_VOX_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
                        {sh::BIND_VOX_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_SHADER_STAGE_FRAGMENT_BIT},
                        {sh::BIND_VOX_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
-                       {sh::BIND_VOX_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+                       {sh::BIND_VOX_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+                       {sh::BIND_VOX_EXTENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT}};
     layout.extraSet = scene.textureTable->layout();
     layout.pushConstantBytes = sizeof(sh::VoxelizePush);
     layout.pushConstantStages = vgf;
@@ -180,6 +181,7 @@ void Voxelizer::voxelize(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpusc
     tracker.image(v.accum, gpu::use::VoxelizeReadWrite)
         .buffer(v.index, gpu::use::FragmentReadWrite)
         .buffer(v.list, gpu::use::FragmentReadWrite)
+        .buffer(v.extents, gpu::use::FragmentReadWrite)
         .flush(cmd);
     voxelizeRaster(cmd, scene, v, dynamic);
 }
@@ -200,6 +202,7 @@ void Voxelizer::voxelizeRaster(VkCommandBuffer cmd, const gpuscene::SceneGpu& sc
         .storageImage(sh::BIND_VOX_ACCUM, v.accum.view())
         .storageBuffer(sh::BIND_VOX_INDEX, v.index.handle())
         .storageBuffer(sh::BIND_VOX_LIST, v.list.handle())
+        .storageBuffer(sh::BIND_VOX_EXTENTS, v.extents.handle())
         .push(ctx_, cmd, voxelize_);
     scene.bindGeometry(cmd, voxelize_.layout());
     const VkViewport viewport{0, 0, float(n), float(n), 0, 1};

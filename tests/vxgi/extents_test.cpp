@@ -1,7 +1,9 @@
 // The part of each voxel its surface reaches (the extents, shared/voxel_data.h):
-// the compute voxelizer ORs, per voxel, every touching triangle's bounding
-// box in eighths of the voxel per axis; checked bit for bit against the CPU
-// reference voxelization. The other voxelizers leave them 0 (not known).
+// the voxelizers OR, per voxel, every touching triangle's bounding box in
+// eighths of the voxel per axis; checked against the CPU reference
+// voxelization: bit for bit for the compute voxelizer, and for the geometry
+// shader's, whose dilated columns may reach a few voxels more, as a superset
+// equal in most voxels. The pv voxelizer leaves them 0 (not known).
 #include <gtest/gtest.h>
 
 #include "gpu/transfer.h"
@@ -14,7 +16,7 @@ namespace {
 
 namespace sh = dvsgi::shader;
 
-class VoxelExtents : public GpuTest {};
+class VoxelExtents : public GpuTest, public ::testing::WithParamInterface<vxgi::VoxelizerKind> {};
 
 const vxgi::GridSpec kGrid = exactGrid(glm::vec3(0.0f), 1.0f, 32);
 
@@ -28,9 +30,10 @@ scene::Scene edgesScene() {
     return s;
 }
 
-TEST_F(VoxelExtents, ComputeVoxelizerMatchesTheTrianglesBoxes) {
+TEST_P(VoxelExtents, MatchTheTrianglesBoxes) {
+    const bool exact = GetParam() == vxgi::VoxelizerKind::Compute;
     const scene::Scene s = edgesScene();
-    VoxelRig rig(s, kGrid, vxgi::VoxelizerKind::Compute);
+    VoxelRig rig(s, kGrid, GetParam());
     rig.fullVoxelize();
     const std::vector<uint32_t> got = readExtents(rig.volumes);
 
@@ -49,24 +52,25 @@ TEST_F(VoxelExtents, ComputeVoxelizerMatchesTheTrianglesBoxes) {
                 for (int x = 0; x < int(n); ++x) {
                     if (!one.get(x, y, z)) continue;
                     const glm::vec3 c = glm::vec3(float(x), float(y), float(z));
-                    uint32_t bits = 0;
-                    for (int k = 0; k < 3; ++k)
-                        bits |= sh::voxelExtentAxisBits(lo[k] - c[k], hi[k] - c[k]) << (sh::VOXEL_EXTENT_STEPS * k);
-                    want[(size_t(z) * n + size_t(y)) * n + size_t(x)] |= bits;
+                    want[(size_t(z) * n + size_t(y)) * n + size_t(x)] |= sh::voxelExtentBits(lo - c, hi - c);
                 }
     }
-    int occupied = 0, partial = 0, differ = 0;
+    int occupied = 0, partial = 0, differ = 0, missing = 0;
     for (size_t i = 0; i < got.size(); ++i) {
         occupied += want[i] != 0;
         partial += want[i] != 0 && want[i] != sh::VOXEL_EXTENT_ALL;
-        if (got[i] != want[i] && differ++ < 5)
+        differ += got[i] != want[i];
+        if ((exact ? got[i] != want[i] : (got[i] & want[i]) != want[i]) && missing++ < 5)
             ADD_FAILURE() << "voxel " << i % n << " " << i / n % n << " " << i / (n * n) << ": extents " << std::hex
-                          << got[i] << ", expected " << want[i];
+                          << got[i] << ", expected " << (exact ? "" : "at least ") << want[i];
     }
-    std::printf("  %d voxels, %d reached in part\n", occupied, partial);
-    EXPECT_EQ(differ, 0);
+    std::printf("  %d voxels, %d reached in part, %d differ\n", occupied, partial, differ);
+    EXPECT_EQ(missing, 0);
     EXPECT_GT(partial, 200) << "the box's faces and edges lie inside their voxels";
+    EXPECT_LE(differ, exact ? 0 : occupied / 10) << "the dilated columns' extra voxels";
 }
+
+INSTANTIATE_TEST_SUITE_P(Voxelizers, VoxelExtents, ::testing::ValuesIn(kVoxelizers), voxelizerTestName);
 
 // One axis's bits: the eighths a box reaches, clamped to the voxel.
 TEST(VoxelExtentBits, EighthsReached) {
