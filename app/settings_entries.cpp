@@ -432,7 +432,7 @@ std::vector<Setting> imageAndVoxels() {
                      "by one (with --normal-weighted off)",
                      kAll, kFrame},
                     {{"whole", false}, {"faces", true}}, FIELD(settings.voxelLight.edgeFaces)),
-             "whole"),
+             "faces"),
         with(choice({"voxel-occlusion", kVoxelLight, "M", "",
                      "occlusion of lights at voxels for all lights: shadowmap, raycast (hard), soft (raycast, "
                      "nu += (1-nu) kappa / t), none; per-light: each light's own mode (shadowmap unless "

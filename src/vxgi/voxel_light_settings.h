@@ -65,11 +65,11 @@ struct VoxelLightSettings {
     bool backsDark = true;
     // Edge and corner voxels as their faces (--edge-voxels faces): rays pass
     // beside the part of a voxel its surface does not reach, and an edge
-    // voxel is lit and seen per axis face. Whole voxels fattened each edge by
-    // half a voxel, lit both faces of an edge alike and took cornell-lights
-    // above its reference (docs/quality.md, "--edge-voxels faces"). With
-    // Lambert only (normalWeighted off).
-    bool edgeFaces = true;
+    // voxel is lit and seen per axis face. With Lambert only (normalWeighted
+    // off). Off by default: it brings the Cornell box to its reference, but
+    // Sponza under the sun comes out 9 % brighter over placements of the grid
+    // at 128^3 (docs/quality.md, "--edge-voxels faces").
+    bool edgeFaces = false;
 };
 
 // Whether edge voxels are lit and shown as their faces with these settings.

@@ -61,14 +61,7 @@ subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(tracer), "corne
 
 # Bounds: 1.5x the errors measured on lavapipe (docs/quality.md, "One bounce at a time", "A voxel seen
 # from behind" and "Area lights seen by rays"), but no tighter than the tracer's own agreement with dvsgi's
-# direct light (1 %; exact there: both are Lambert with hard shadows). Measured with --edge-voxels faces,
-# the default since 2026-12-07 (edge voxels lit and seen face by face, rays passing beside the part of a
-# voxel its surface does not reach): cornell-lights' first bounce +1.3 %, its second +1.1 %, with the
-# paper's cones -5.5 %, the lit corner's first bounce -0.5 %; cornell-emissive's direct light on its
-# surfaces -1.6 %, its first bounce +1.2 %, its second +1.9 %. Whole voxels' two errors at edges, which
-# partly cancelled (fattened edges too bright, Lambert with the diagonal normal too dark), had hidden part
-# of the first bounce's excess; where that comes from is not measured yet (docs/quality.md,
-# "--edge-voxels faces"). With whole voxels, measured since the gather's rays
+# direct light (1 %; exact there: both are Lambert with hard shadows). Measured since the gather's rays
 # are spread over each 4x4 block of pixels and their filter keeps to the pixel's plane (2026-12-06, late
 # night): cornell-lights' first bounce +0.5 %, its second bounce with the default rays +1.0 %, with the
 # paper's cones -5.5 %, the lit corner's first bounce +1.0 % (+0.3 % with 1024 rays per pixel: the 16
@@ -82,9 +75,9 @@ subprocess.run(["/usr/bin/python3", os.path.join(os.path.dirname(tracer), "corne
 # directBound: the bound on the direct light and the grid it is rendered on (0: no voxels, punctual
 # lights alone); secondBounds: (bound, dvsgi options) per way of tracing the voxel bounce.
 emissive = cornell.replace("cornell-lights", "cornell-emissive")
-cases = [("cornell-lights", cornell, (0.01, 0), 0.0195, [(0.0165, []), (0.0825, ["--bounce-trace", "cones"])], []),
-         ("cornell-emissive", emissive, (0.024, VOXELS), 0.018, [(0.0285, [])], ["--pixel-centres"]),
-         ("corner", corner, (0.01, 0), 0.01, [], [])]
+cases = [("cornell-lights", cornell, (0.01, 0), 0.01, [(0.015, []), (0.0825, ["--bounce-trace", "cones"])], []),
+         ("cornell-emissive", emissive, (0.030, VOXELS), 0.010, [(0.0165, [])], ["--pixel-centres"]),
+         ("corner", corner, (0.01, 0), 0.015, [], [])]
 for name, scene, (directBound, directVoxels), firstBound, secondBounds, traceOptions in cases:
     prefix = os.path.join(tmp, name)
     subprocess.run(["/usr/bin/python3", tracer, scene, prefix, "--size", str(SIZE), "--spp", str(SPP), "--bounces", "2",

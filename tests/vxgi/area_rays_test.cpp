@@ -65,7 +65,6 @@ TEST_P(AreaRaysWith, VisibilityMatchesTheSameRaysMarchedOnTheCpu) {
     const image::ImageRGBA32F img = r.readOutput();
     const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
     const VoxelReadback attributes = readVoxels(*r.volumes());
-    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes);
     const vxgi::GridSpec& g = r.volumes()->grid;
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
     const std::vector<shader::GpuLight> patches =
@@ -93,8 +92,7 @@ TEST_P(AreaRaysWith, VisibilityMatchesTheSameRaysMarchedOnTheCpu) {
                 const glm::vec3 d = toEmitter / reach;
                 reach -= 2.0f / std::max(std::fabs(glm::dot(axis, d)), 0.2f);
                 float t = INFINITY;
-                if (reach > 0.0f)
-                    marchRay(radiance, p + up * offset, d, own, normalAt, RayStart::Pixel, false, &t, &edges);
+                if (reach > 0.0f) marchRay(radiance, p + up * offset, d, own, normalAt, RayStart::Pixel, false, &t);
                 visible += t >= reach ? 1.0 : 0.0;
                 ++lit;
             }

@@ -65,6 +65,10 @@ class GatherRaysBox : public GatherRays, public ::testing::WithParamInterface<fl
 
 TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     const float half = GetParam();
+    // Whole voxels (the default), and edge voxels as their faces: the CPU
+    // march then takes the extents and the faces too (ray_march.h, EdgeModel).
+    for (bool faces : {false, true}) {
+    SCOPED_TRACE(faces ? "--edge-voxels faces" : "--edge-voxels whole");
     scene::Scene s;
     addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), half, true);
     addTopDownCamera(s, 0.6f, glm::radians(70.0f));
@@ -78,6 +82,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     rs.gather.rayOffsetVoxels = kOffset;
     rs.gather.traceScale = 1.0f;  // trace pixel = image pixel, whose seed the CPU repeats
     rs.gather.spin = false;       // each pixel's own rays, not resolved with its neighbours'
+    rs.voxelLight.edgeFaces = faces;
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     const image::ImageRGBA32F img = r.readOutput();
@@ -110,7 +115,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
                 cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel, true,
-                                nullptr, &edges)
+                                nullptr, faces ? &edges : nullptr)
                            .r;
             cpu /= kRays;
             const double gpu = img.at(x, y)[0];
@@ -119,9 +124,10 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             worst = std::max(worst, std::fabs(gpu - cpu));
             ++count;
         }
-    std::printf("  %d floor pixels (%d starting behind a wall voxel's centre plane): E/pi GPU %.5f, CPU %.5f "
+    std::printf("  %s: %d floor pixels (%d starting behind a wall voxel's centre plane): E/pi GPU %.5f, CPU %.5f "
                 "(%+.3f%%); worst pixel off by %.4f\n",
-                count, behind, sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
+                faces ? "faces" : "whole", count, behind, sumGpu / count, sumCpu / count,
+                100.0 * (sumGpu / sumCpu - 1.0), worst);
     ASSERT_GT(count, 500);
     if (half > 0.72f) {
         EXPECT_GT(behind, 20);
@@ -129,6 +135,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.003);
     // One ray of 16 meeting a wall on one side and not on the other would be 1/16.
     EXPECT_LT(worst, 0.5 / kRays);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(WallAt, GatherRaysBox, ::testing::Values(0.71875f, 0.7375f),
@@ -173,7 +180,6 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
         const image::ImageRGBA32F img = r.readOutput();
         const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
         const VoxelReadback attributes = readVoxels(*r.volumes());
-        const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes);
         const glm::vec3 up(0.0f, 1.0f, 0.0f);
         const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
         double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
@@ -188,7 +194,7 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
                 for (uint32_t i = 0; i < kRays; ++i) {
                     float t = INFINITY;
                     marchRay(radiance, p + up * kOffset, cosineRay(up, seed, i), own, normalAt, RayStart::Pixel, true,
-                             &t, &edges);
+                             &t);
                     if (std::isfinite(t)) occlusion += 1.0 / (1.0 + lambda * t);
                 }
                 const double cpu = occlusion / kRays, gpu = 1.0 - img.at(x, y)[0];
