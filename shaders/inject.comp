@@ -98,7 +98,7 @@ void main() {
     vec3 side[2] = vec3[2](radiance, radiance);
     // An edge or corner voxel also keeps each axis face's light apart, for
     // rays to see the faces that turn toward them (lib/voxel_rays.glsl).
-    bool faces = edges && voxelShowsFaces(slot);
+    bool faces = edges && showsFaces(pos, neg, planeW);
     vec3 face[3] = vec3[3](radiance, radiance, radiance);
     vec3 faceSign = mix(vec3(-1.0), vec3(1.0), greaterThanEqual(pos, neg));
     for (uint i = 0u; i < pc.flags.x; ++i) {

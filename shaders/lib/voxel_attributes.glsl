@@ -73,11 +73,13 @@ float voxelPlaneShare(uint slot, vec3 pos, vec3 neg) {
 
 // A one-sided voxel (the side code SIDE_ONE of lib/voxel_sides.glsl) made of
 // faces along several axes, an edge or a corner: with --edge-voxels faces lit
-// per axis face, and rays see the faces that turn toward them.
-const float FACES_BELOW_PLANE_SHARE = 0.99;
+// per axis face, and rays see the faces that turn toward them. From its
+// normal weights and plane share where the caller has them.
+bool showsFaces(vec3 pos, vec3 neg, float planeShare) {
+    return !any(greaterThanEqual(min(pos, neg), vec3(TWO_SIDED_MIN_WEIGHT))) && planeShare < FACES_BELOW_PLANE_SHARE;
+}
 bool voxelShowsFaces(uint slot) {
     vec3 pos, neg;
     voxelNormalWeights(slot, pos, neg);
-    if (any(greaterThanEqual(min(pos, neg), vec3(TWO_SIDED_MIN_WEIGHT)))) return false;
-    return voxelPlaneShare(slot, pos, neg) < FACES_BELOW_PLANE_SHARE;
+    return showsFaces(pos, neg, voxelPlaneShare(slot, pos, neg));
 }

@@ -89,13 +89,16 @@ void extentBox(ivec3 c, uint bits, out vec3 lo, out vec3 hi) {
 }
 
 // Whether a ray from p along d, at p + d t inside occupied voxel c (normal
-// nc, extents `bits`), misses the part of c that its surface covers: a plane
+// nc, packed word `word`, slot + 1 `slot`), misses the part of c that its
+// surface covers, as its extents give it (read only here, where they apply): a plane
 // along an axis where the ray crosses the plane through c's centre (or where
 // it enters, if it does not cross it inside c), anything else along its whole
 // path through c. Without it a voxel holding a block's edge is a whole cube
 // to rays, and each edge stands half a voxel out (docs/quality.md, "Surfaces'
 // extent inside their voxels").
-bool passesBeside(ivec3 c, vec3 nc, uint bits, vec3 p, vec3 d, vec3 inv, float t) {
+bool passesBeside(ivec3 c, vec3 nc, uint word, uint slot, vec3 p, vec3 d, vec3 inv, float t) {
+    if ((word & RAY_NORMAL_EXTENTS_BIT) == 0u) return false;
+    uint bits = voxelExtents[slot - 1u];
     if (bits == 0u || bits == VOXEL_EXTENT_ALL) return false;  // not known (the pv voxelizer's), or all
     vec3 lo, hi;
     extentBox(c, bits, lo, hi);
@@ -144,9 +147,8 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
             uint slot = voxelSlotAt(c);
             uint word = slot != 0u ? imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r : 0u;
             vec3 nc = slot != 0u ? unpackRayNormal(word) : vec3(0.0);
-            uint extent = (word & RAY_NORMAL_EXTENTS_BIT) != 0u ? voxelExtents[slot - 1u] : VOXEL_EXTENT_ALL;
             if (!onOwnSurface(c, nc, self, n) && !onOwnSurface(c, nc, besideAt, besideN) &&
-                (i == 0 || !passesInFront(c, nc, p, d, inv, t)) && !passesBeside(c, nc, extent, p, d, inv, t)) {
+                (i == 0 || !passesInFront(c, nc, p, d, inv, t)) && !passesBeside(c, nc, word, slot, p, d, inv, t)) {
                 bool faces = (word & RAY_NORMAL_FACES_BIT) != 0u;
                 if (i != 0) seen = faces ? facesSeen(slot, r, nc, d) : radianceSeen(slot, r, d);
                 // A voxel that shows its faces weighs each by how it turns toward the ray already; its

@@ -41,6 +41,9 @@ DVSGI_CONST(uint, CH_FIRST_X, 13);
 DVSGI_CONST(uint, CH_FIRST_Y, 14);
 DVSGI_CONST(uint, CH_FIRST_Z, 15);
 DVSGI_CONST(uint, VOXEL_CHANNELS, 16);
+// A one-sided voxel less than this share one plane shows its faces
+// (--edge-voxels faces; lib/voxel_attributes.glsl, voxelShowsFaces).
+DVSGI_CONST(float, FACES_BELOW_PLANE_SHARE, 0.99);
 
 // The part of its voxel a surface covers (--edge-voxels faces). Per slot, one
 // uint in the extents buffer (VOXEL_EXTENTS_BLOCK): per axis a (bits 8a to

@@ -41,12 +41,7 @@ std::vector<SyntheticVoxel> makeEdgeVoxels(uint32_t seed) {
     return out;
 }
 
-// lib/voxel_attributes.glsl's voxelPlaneShare.
-double planeShare(const Channels& c) {
-    const double lp = glm::length(glm::sqrt(c.pos) - glm::sqrt(c.neg)), la = glm::length(c.pos - c.neg),
-                 lm = glm::length(c.first);
-    return lp - la > 1e-3 ? std::clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
-}
+double planeShare(const Channels& c) { return planeShareOf(c.pos, c.neg, c.first); }
 
 struct EdgeLight {
     dvec3 radiance;
@@ -60,8 +55,8 @@ EdgeLight referenceEdgeLight(const Channels& c, const dvec3& P, const std::vecto
     const double lp = glm::length(glm::sqrt(c.pos) - glm::sqrt(c.neg)), la = glm::length(c.pos - c.neg);
     const dvec3 n = voxelNormal(c);
     EdgeLight out;
-    out.faces = sideCode(c) == sh::SIDE_ONE && share < 0.99;
-    out.ambiguous = std::abs(share - 0.99) < 1e-3 || std::abs(lp - la - 1e-3) < 1e-4;
+    out.faces = sideCode(c) == sh::SIDE_ONE && share < sh::FACES_BELOW_PLANE_SHARE;
+    out.ambiguous = std::abs(share - sh::FACES_BELOW_PLANE_SHARE) < 1e-3 || std::abs(lp - la - 1e-3) < 1e-4;
     // One fragment in ten along an axis's other sign sits on the two-sided threshold.
     for (int a = 0; a < 3; ++a)
         out.ambiguous = out.ambiguous || std::abs(std::min(c.pos[a], c.neg[a]) - sh::TWO_SIDED_MIN_WEIGHT) < 1e-5;
@@ -89,11 +84,8 @@ class InjectEdges : public GpuTest {};
 // fp16 (direct light): 1.5e-3 of the value, as InjectDirect; RGB9E5 (the
 // faces' light): 2e-3 of the largest component, as the side light.
 TEST_F(InjectEdges, EdgeVoxelsAreLitFaceByFace) {
-    const std::vector<SyntheticVoxel> voxels = makeEdgeVoxels(3);
-    const AccumVolume accum = toAccum(voxels);
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(makeEdgeVoxels(3));
+    const auto& [voxels, accum, volumes, pass] = sg;
     const vxgi::GridSpec g = grid();
     for (const LightCase& lc : lightCases()) {
         const Rgba16Volume direct = inject(volumes, pass, lc.lights, false, false, true);
@@ -110,7 +102,7 @@ TEST_F(InjectEdges, EdgeVoxelsAreLitFaceByFace) {
                     if (want.ambiguous) continue;
                     ++checked;
                     faces += want.faces;
-                    planes += planeShare(c) >= 0.99;
+                    planes += planeShare(c) >= sh::FACES_BELOW_PLANE_SHARE;
                     const glm::vec4 got = direct.at(x, y, z);
                     bool ok = got.a == 1.0f + float(sideCode(c));
                     for (int ch = 0; ch < 3; ++ch) {
@@ -156,10 +148,8 @@ TEST_F(InjectEdges, BoxEdgeLitAlongOneFace) {
     SyntheticVoxel& edge = voxels[voxelIndex(kN, 5, 6, 7)];
     edge.albedo = glm::vec3(0.5f, 0.25f, 1.0f);
     edge.normals = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
-    const AccumVolume accum = toAccum(voxels);
-    const vxgi::VoxelVolumes volumes(context(), grid());
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(voxels);
+    const auto& [synthetic, accum, volumes, pass] = sg;
     scene::PlacedLight sunAlongX = sun();
     sunAlongX.direction = glm::vec3(-1.0f, 0.0f, 0.0f);
     const double full = 3.0 / kPi;  // E rho / pi per unit albedo, the sun's intensity 3

@@ -71,6 +71,19 @@ inline AccumVolume toAccum(const std::vector<SyntheticVoxel>& voxels) {
     return a;
 }
 
+// Synthetic voxels summed into channels and uploaded, a static slot for every
+// grid voxel, with an InjectPass to light them.
+struct SyntheticGrid {
+    explicit SyntheticGrid(std::vector<SyntheticVoxel> v)
+        : voxels(std::move(v)), accum(toAccum(voxels)), volumes(context(), grid(), kN * kN * kN), pass(context()) {
+        uploadAccum(volumes, accum);
+    }
+    std::vector<SyntheticVoxel> voxels;
+    AccumVolume accum;
+    vxgi::VoxelVolumes volumes;
+    vxgi::InjectPass pass;
+};
+
 // ---- CPU reference, in double ----
 
 struct Channels {

@@ -104,12 +104,8 @@ void compare(const Rgba16Volume& gpu, const AccumVolume& accum, const std::vecto
 }
 
 TEST_F(InjectDirect, NormalWeightedMatchesEq5) {
-    const std::vector<SyntheticVoxel> voxels = makeVoxels(7);
-    const AccumVolume accum = toAccum(voxels);
-    // Synthetic voxels fill much of the grid: a slot for every voxel.
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(makeVoxels(7));
+    const auto& [voxels, accum, volumes, pass] = sg;
     for (const LightCase& lc : lightCases()) {
         const Rgba16Volume got = inject(volumes, pass, lc.lights, true);
         compare(got, accum, voxels, lc.lights, Attenuation::NormalWeightedChannels, false,
@@ -124,12 +120,8 @@ TEST_F(InjectDirect, NormalWeightedMatchesEq5) {
 }
 
 TEST_F(InjectDirect, LambertMatchesEq2) {
-    const std::vector<SyntheticVoxel> voxels = makeVoxels(11);
-    const AccumVolume accum = toAccum(voxels);
-    // Synthetic voxels fill much of the grid: a slot for every voxel.
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(makeVoxels(11));
+    const auto& [voxels, accum, volumes, pass] = sg;
     for (const LightCase& lc : lightCases())
         compare(inject(volumes, pass, lc.lights, false), accum, voxels, lc.lights, Attenuation::Lambert, false,
                 lc.name + ", eq. 2");
@@ -145,11 +137,8 @@ TEST_F(InjectDirect, Eq5AndEq2AgreeOnlyForAxisAlignedNormals) {
     SyntheticVoxel& oblique = voxels[voxelIndex(kN, 20, 10, 10)];
     oblique.albedo = glm::vec3(0.8f);
     oblique.normals = {glm::normalize(glm::vec3(1, 1, 0))};
-    const AccumVolume accum = toAccum(voxels);
-    // Synthetic voxels fill much of the grid: a slot for every voxel.
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(voxels);
+    const auto& [synthetic, accum, volumes, pass] = sg;
     scene::PlacedLight light = sun();
     light.light.color = glm::vec3(1.0f);
     light.direction = glm::normalize(glm::vec3(-1.0f, -2.0f, 0.0f));
@@ -169,11 +158,8 @@ TEST_F(InjectDirect, Eq5AndEq2AgreeOnlyForAxisAlignedNormals) {
 // RGB9E5 keeps 9 bits under a shared exponent, with no implicit leading one:
 // half a step is up to 2^-9 of the largest component (measured worst 1.95e-3).
 TEST_F(InjectDirect, TwoSidedVoxelsAreLitPerSide) {
-    const std::vector<SyntheticVoxel> voxels = makeVoxels(5);
-    const AccumVolume accum = toAccum(voxels);
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(makeVoxels(5));
+    const auto& [voxels, accum, volumes, pass] = sg;
     const vxgi::GridSpec g = grid();
     for (const LightCase& lc : lightCases()) {
         inject(volumes, pass, lc.lights, true);
@@ -233,11 +219,9 @@ double seenFront(const dvec3& n, int dir) {
 // is black every way, all with opacity 1; one-sided voxels show their
 // radiance to the rays that meet their front (seenFront).
 TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
-    const std::vector<SyntheticVoxel> voxels = makeVoxels(9);
-    const AccumVolume accum = toAccum(voxels);
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    inject(volumes, vxgi::InjectPass(context()), {sun(), pointLight()}, true);
+    const SyntheticGrid sg(makeVoxels(9));
+    const auto& [voxels, accum, volumes, pass] = sg;
+    inject(volumes, pass, {sun(), pointLight()}, true);
     const vxgi::AnisoFilterPass filter(context());
     gpu::Tracker tracker = volumeTracker(volumes);
     context().submitAndWait([&](VkCommandBuffer cmd) { filter.record(cmd, tracker, volumes, true, nullptr, "test filter"); });
@@ -293,11 +277,8 @@ TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
 // last frame's, so inject keeps the side light's reflected words then, and
 // zeroes them otherwise (K bounces start from none).
 TEST_F(InjectDirect, SideReflectionIsKeptOnlyForFeedbackFrames) {
-    const std::vector<SyntheticVoxel> voxels = makeVoxels(13);
-    const AccumVolume accum = toAccum(voxels);
-    const vxgi::VoxelVolumes volumes(context(), grid(), kN * kN * kN);
-    uploadAccum(volumes, accum);
-    const vxgi::InjectPass pass(context());
+    const SyntheticGrid sg(makeVoxels(13));
+    const auto& [voxels, accum, volumes, pass] = sg;
     std::vector<glm::uvec4> marked(size_t(volumes.slots), glm::uvec4(0u));
     for (size_t i = 0; i < marked.size(); ++i) marked[i] = glm::uvec4(0u, 0u, 0x1000u + uint32_t(i), 0x2000u + uint32_t(i));
     for (bool keep : {true, false}) {

@@ -17,6 +17,14 @@
 
 namespace dvsgi::test {
 
+// lib/voxel_attributes.glsl's voxelPlaneShare in double, from the mean normal
+// weights per sign and the mean normal: 1 for one plane, 0 for faces along the axes.
+inline double planeShareOf(const glm::dvec3& pos, const glm::dvec3& neg, const glm::dvec3& first) {
+    const double lp = glm::length(glm::sqrt(pos) - glm::sqrt(neg)), la = glm::length(pos - neg),
+                 lm = glm::length(first);
+    return lp - la > 1e-3 ? glm::clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
+}
+
 // What a value becomes once stored in an RGBA16F texel (round to nearest even).
 float toHalf(float v);
 glm::vec4 toHalf(glm::vec4 v);

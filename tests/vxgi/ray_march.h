@@ -54,17 +54,14 @@ struct EdgeModel {
 
 // lib/voxel_attributes.glsl's voxelShowsFaces from the read-back sums.
 inline bool showsFaces(const VoxelReadback& a, glm::ivec3 c) {
-    glm::dvec3 pos, neg, first;
+    glm::dvec3 pos(0.0), neg(0.0), first(0.0);
     for (int k = 0; k < 3; ++k) {
         pos[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_POS_X + 2 * k);
         neg[k] = a.average(c.x, c.y, c.z, shader::CH_NORMAL_NEG_X + 2 * k);
         first[k] = a.average(c.x, c.y, c.z, shader::CH_FIRST_X + k);
         if (std::min(pos[k], neg[k]) >= shader::TWO_SIDED_MIN_WEIGHT) return false;
     }
-    const double lp = glm::length(glm::sqrt(pos) - glm::sqrt(neg)), la = glm::length(pos - neg),
-                 lm = glm::length(first);
-    const double share = lp - la > 1e-3 ? std::clamp((lm - la) / (lp - la), 0.0, 1.0) : 1.0;
-    return share < 0.99;
+    return planeShareOf(pos, neg, first) < shader::FACES_BELOW_PLANE_SHARE;
 }
 
 // lib/voxel_rays.glsl's facesSeen, from a voxel's side texel t: its reflected
