@@ -89,15 +89,11 @@ void extentBox(ivec3 c, uint bits, out vec3 lo, out vec3 hi) {
 }
 
 // Whether a ray from p along d, at p + d t inside occupied voxel c (normal
-// nc, packed word `word`, slot + 1 `slot`), misses the part of c that its
-// surface covers, as its extents give it (read only here, where they apply): a plane
-// along an axis where the ray crosses the plane through c's centre (or where
-// it enters, if it does not cross it inside c), anything else along its whole
-// path through c. Without it a voxel holding a block's edge is a whole cube
-// to rays, and each edge stands half a voxel out (docs/quality.md, "Surfaces'
-// extent inside their voxels").
-bool passesBeside(ivec3 c, vec3 nc, uint word, uint slot, vec3 p, vec3 d, vec3 inv, float t) {
-    if ((word & RAY_NORMAL_EXTENTS_BIT) == 0u) return false;
+// nc, slot + 1 `slot`), misses the part of c that its surface covers, as its
+// extents give it: a plane along an axis where the ray crosses the plane
+// through c's centre (or where it enters, if it does not cross it inside c),
+// anything else along its whole path through c.
+bool missesExtents(ivec3 c, vec3 nc, uint slot, vec3 p, vec3 d, vec3 inv, float t) {
     uint bits = voxelExtents[slot - 1u];
     if (bits == 0u || bits == VOXEL_EXTENT_ALL) return false;  // not known (the pv voxelizer's), or all
     vec3 lo, hi;
@@ -117,6 +113,42 @@ bool passesBeside(ivec3 c, vec3 nc, uint word, uint slot, vec3 p, vec3 d, vec3 i
     vec3 tn = min(t0, t1), tf = max(t0, t1);
     float enter = max(max(tn.x, tn.y), max(tn.z, t)), leave = min(min(tf.x, tf.y), min(tf.z, tExit));
     return enter > leave + 1e-4;
+}
+// With --edge-voxels faces (the packed word's RAY_NORMAL_EXTENTS_BIT): whether
+// the ray passes beside the part of c its surface covers (missesExtents; the
+// extents are read only where they apply). Without it a voxel holding a
+// block's edge is a whole cube to rays, and each edge stands half a voxel out
+// (docs/quality.md, "Surfaces' extent inside their voxels").
+bool passesBeside(ivec3 c, vec3 nc, uint word, uint slot, vec3 p, vec3 d, vec3 inv, float t) {
+    return (word & RAY_NORMAL_EXTENTS_BIT) != 0u && missesExtents(c, nc, slot, p, d, inv, t);
+}
+
+// Whether a ray from p along d (1/d = inv), at p + d t inside voxel c (slot +
+// 1 `slot`, radiance opacity `opacity`), which holds a thin wall's two sides
+// across one axis (lib/voxel_sides.glsl), passes beside the wall's end: it
+// leaves c without crossing the plane through c's centre across that axis, on
+// one side of the wall, and misses the box the voxel's extents give. Taken
+// whole, such a voxel showed a ray that entered it through the wall's end (a
+// ledge's or a banner's edge) the side facing the way the ray travels, which
+// can be the side the ray never faced: a ray from under a thin sunlit slab
+// that ran along it met the slab's sunlit top (docs/quality.md, "Thin walls'
+// ends"). A ray through the wall crosses that plane in one of the layer's
+// voxels. The extents keep the corners closed where a thin wall meets
+// another: there the wall's last voxel can count as two-sided across the
+// other's axis only, and its plane alone left a gap half a voxel wide between
+// the two walls' planes (a room of thin walls let light in along its edges).
+bool passesThinWallEnd(ivec3 c, float opacity, uint slot, vec3 p, vec3 d, vec3 inv, float t) {
+    int axis = twoSidedAxis(sideCodeOfOpacity(opacity));
+    if (axis < 0 || slot == 0u) return false;
+    float ahead = float(c[axis]) + 0.5 - (p[axis] + d[axis] * t);
+    bool crosses;
+    if (abs(d[axis]) < 1e-7) {
+        crosses = abs(ahead) <= 1e-4;
+    } else {
+        float tp = t + ahead / d[axis];
+        crosses = tp >= t - 1e-4 && tp <= exitDistance(p, inv, vec3(c), 1.0) + 1e-4;
+    }
+    return !crosses && missesExtents(c, vec3(0.0), slot, p, d, inv, t);
 }
 
 // One step of a ray from voxel-space point p along unit d (1/d = inv), at
@@ -148,7 +180,8 @@ bool voxelRayStep(vec3 p, vec3 d, vec3 inv, inout float t, int i, vec3 self, vec
             uint word = slot != 0u ? imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r : 0u;
             vec3 nc = slot != 0u ? unpackRayNormal(word) : vec3(0.0);
             if (!onOwnSurface(c, nc, self, n) && !onOwnSurface(c, nc, besideAt, besideN) &&
-                (i == 0 || !passesInFront(c, nc, p, d, inv, t)) && !passesBeside(c, nc, word, slot, p, d, inv, t)) {
+                (i == 0 || !passesInFront(c, nc, p, d, inv, t)) && !passesBeside(c, nc, word, slot, p, d, inv, t) &&
+                (i == 0 || !passesThinWallEnd(c, r.a, slot, p, d, inv, t))) {
                 bool faces = (word & RAY_NORMAL_FACES_BIT) != 0u;
                 if (i != 0) seen = faces ? facesSeen(slot, r, nc, d) : radianceSeen(slot, r, d);
                 // A voxel that shows its faces weighs each by how it turns toward the ray already; its

@@ -5,7 +5,9 @@
 // the voxel's own surface) walked voxel by voxel through that radiance. What
 // one bounce adds to each voxel must be albedo times their mean. With
 // --edge-voxels faces the same, the rays passing beside the part of the box's
-// edge voxels its walls do not reach and seeing those voxels' faces.
+// edge voxels its walls do not reach and seeing those voxels' faces. And with
+// a thin slab inside the box, its top emitting: the rays see the side of the
+// slab's voxels they meet and pass beside its ends.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,12 +97,13 @@ TEST_F(BounceRays, MatchTheSameRaysMarchedOnTheCpu) {
     RayInputs in;
     const Rgba16Volume before = radianceAfter(s, 0, &in), after = radianceAfter(s, 1);
     const VoxelReadback& attributes = in.attributes;
+    const EdgeModel model = edgeModel(attributes, in.extents, in.sides, false);
     double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
     int count = 0;
     forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
         if (v.y == kHigh) return;  // the opening
         const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
-        const float cpu = kRho * cpuRays(before, attributes, v, wallNormal(v));
+        const float cpu = kRho * cpuRays(before, attributes, v, wallNormal(v), &model);
         sumGpu += gpu;
         sumCpu += cpu;
         worst = std::max(worst, double(std::fabs(gpu - cpu)));
@@ -147,6 +150,51 @@ TEST_F(BounceRays, EdgeFacesMatchTheSameRaysMarchedOnTheCpu) {
     ASSERT_GT(partial, 1000) << "its walls lie in the middle of their voxels";
     EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
     EXPECT_LT(worst, 0.02);
+}
+
+// A slab thinner than a voxel across the box, lying in the middle of voxel
+// layer 16 and ending inside voxels 11 and 20 along x and 8 and 23 along z;
+// its top emits kSlabL. Its voxels hold its two sides: rays that meet them
+// see the side they meet, and rays that run past its ends, beside it, go on.
+TEST_F(BounceRays, ThinSlabMatchesTheSameRaysMarchedOnTheCpu) {
+    constexpr float kSlabL = 4.0f;
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf, true);
+    const glm::vec3 lo(-0.3f, 0.0f, -0.45f), hi(0.3f, 0.0f, 0.45f);
+    addRect(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kSlabL)), glm::vec3(lo.x, 0.04f, lo.z),
+            glm::vec3(hi.x, 0.04f, hi.z), 1, 1.0f);
+    addRect(s, addMaterial(s, glm::vec3(kRho)), glm::vec3(lo.x, 0.02f, lo.z), glm::vec3(hi.x, 0.02f, hi.z), 1, -1.0f);
+    addTopDownCamera(s, 0.0f, 1.0f);
+    RayInputs in;
+    const Rgba16Volume before = radianceAfter(s, 0, &in), after = radianceAfter(s, 1);
+    EdgeModel model = edgeModel(in.attributes, in.extents, in.sides, false);
+    int slabVoxels = 0;
+    for (int z = 0; z < int(kN); ++z)
+        for (int x = 0; x < int(kN); ++x) slabVoxels += thinWallAxis(before.at(x, 16, z).a) == 1;
+    double sumGpu = 0.0, sumCpu = 0.0, sumCpuWhole = 0.0, worst = 0.0;
+    int count = 0;
+    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
+        if (v.y == kHigh) return;
+        const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
+        model.thinWallEnds = true;
+        const float cpu = kRho * cpuRays(before, in.attributes, v, wallNormal(v), &model);
+        model.thinWallEnds = false;
+        sumCpuWhole += kRho * cpuRays(before, in.attributes, v, wallNormal(v), &model);
+        sumGpu += gpu;
+        sumCpu += cpu;
+        worst = std::max(worst, double(std::fabs(gpu - cpu)));
+        ++count;
+    });
+    std::printf("  %d voxels of the slab two-sided across y; %d wall voxels: reflected light GPU %.5f, CPU %.5f "
+                "(%+.3f%%), CPU with the slab's ends whole %.5f (%+.3f%%); worst voxel off by %.4f\n",
+                slabVoxels, count, sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0),
+                sumCpuWhole / count, 100.0 * (sumCpuWhole / sumCpu - 1.0), worst);
+    ASSERT_GT(slabVoxels, 100) << "the slab's voxels hold its two sides";
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
+    EXPECT_LT(worst, 0.02);
+    // The rule matters here: the slab's ends taken whole show the rays that
+    // run past them under the slab its emitting top.
+    EXPECT_GT(sumCpuWhole / sumCpu, 1.01);
 }
 
 }  // namespace

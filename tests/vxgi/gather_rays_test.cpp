@@ -88,7 +88,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     const image::ImageRGBA32F img = r.readOutput();
     const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
     const VoxelReadback attributes = readVoxels(*r.volumes());
-    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes);
+    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, faces);
     const float voxel = 2.0f / float(kN);
     const glm::vec3 n(0.0f, 1.0f, 0.0f);
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
@@ -115,7 +115,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
                 cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel, true,
-                                nullptr, faces ? &edges : nullptr)
+                                nullptr, &edges)
                            .r;
             cpu /= kRays;
             const double gpu = img.at(x, y)[0];

@@ -43,13 +43,20 @@ inline bool rayPassesInFront(glm::ivec3 c, glm::vec3 nc, glm::vec3 p, glm::vec3 
     return t + ahead / along > tExit;
 }
 
-// --edge-voxels faces as the rays see it: each voxel's extents (the extents
-// buffer's word, 0 = not known) and, for a voxel that shows its faces, what a
-// ray along d sees of it given its radiance texel (facesSeen).
+// What the rays read of a voxel besides its radiance and normal: its extents
+// (the extents buffer's word, 0 = not known) and side texel. A thin wall's
+// voxel shows the side a ray meets and lets a ray pass beside the wall's end
+// with either setting; with --edge-voxels faces (`faces`) a ray also passes
+// beside the part of any voxel its surface does not reach, and a voxel that
+// shows its faces shows a ray along d what facesSeen gives from its radiance
+// texel.
 struct EdgeModel {
     std::function<uint32_t(glm::ivec3)> extents;
     std::function<bool(glm::ivec3)> showsFaces;
     std::function<glm::vec3(glm::ivec3, glm::vec3 nc, glm::vec3 d, glm::vec4 r)> facesSeen;
+    std::function<glm::uvec4(glm::ivec3)> sides;
+    bool faces = true;
+    bool thinWallEnds = true;  // rays pass beside thin walls' ends (off: as before that rule, to measure it)
 };
 
 // lib/voxel_attributes.glsl's voxelShowsFaces from the read-back sums.
@@ -76,10 +83,10 @@ inline glm::vec3 facesSeen(glm::uvec4 t, glm::vec3 nc, glm::vec3 d, glm::vec4 r)
 }
 
 // The model from what was read back: the attribute sums, the extents and the
-// side light per grid voxel (readExtents, vxgi::readSideLight). The model
-// keeps copies.
+// side light per grid voxel (readExtents, vxgi::readSideLight), for
+// --edge-voxels faces or not. The model keeps copies.
 inline EdgeModel edgeModel(const VoxelReadback& attributes, std::vector<uint32_t> extents,
-                           std::vector<glm::uvec4> sides) {
+                           std::vector<glm::uvec4> sides, bool faces = true) {
     const uint32_t n = attributes.n;
     auto e = std::make_shared<std::vector<uint32_t>>(std::move(extents));
     auto s = std::make_shared<std::vector<glm::uvec4>>(std::move(sides));
@@ -88,11 +95,13 @@ inline EdgeModel edgeModel(const VoxelReadback& attributes, std::vector<uint32_t
             [a](glm::ivec3 c) { return showsFaces(*a, c); },
             [s, n](glm::ivec3 c, glm::vec3 nc, glm::vec3 d, glm::vec4 r) {
                 return facesSeen((*s)[voxelIndex(n, c.x, c.y, c.z)], nc, d, r);
-            }};
+            },
+            [s, n](glm::ivec3 c) { return (*s)[voxelIndex(n, c.x, c.y, c.z)]; }, faces};
 }
 // The same, read from the volumes.
-inline EdgeModel edgeModel(const gpu::Context& ctx, const vxgi::VoxelVolumes& v, const VoxelReadback& attributes) {
-    return edgeModel(attributes, readExtents(v), vxgi::readSideLight(ctx, v));
+inline EdgeModel edgeModel(const gpu::Context& ctx, const vxgi::VoxelVolumes& v, const VoxelReadback& attributes,
+                           bool faces = true) {
+    return edgeModel(attributes, readExtents(v), vxgi::readSideLight(ctx, v), faces);
 }
 
 // passesBeside: the ray p + d t, inside voxel c (leaving it at tExit), misses
@@ -133,6 +142,37 @@ inline bool rayPassesBeside(glm::ivec3 c, glm::vec3 nc, uint32_t bits, glm::vec3
     return enter > leave + 1e-4f;
 }
 
+// passesThinWallEnd: the ray p + d t, inside voxel c (leaving it at tExit),
+// which holds a thin wall's two sides across `axis`, does not cross the plane
+// through c's centre across it there and misses c's extents box.
+inline bool rayPassesThinWallEnd(glm::ivec3 c, int axis, uint32_t bits, glm::vec3 p, glm::vec3 d, float t,
+                                 float tExit) {
+    const float ahead = float(c[axis]) + 0.5f - (p[axis] + d[axis] * t);
+    bool crosses;
+    if (std::fabs(d[axis]) < 1e-7f) {
+        crosses = std::fabs(ahead) <= 1e-4f;
+    } else {
+        const float tp = t + ahead / d[axis];
+        crosses = tp >= t - 1e-4f && tp <= tExit + 1e-4f;
+    }
+    return !crosses && rayPassesBeside(c, glm::vec3(0.0f), bits, p, d, t, tExit);
+}
+
+// The axis (0-2) across which a voxel whose radiance opacity is `opacity` holds
+// a thin wall's two sides, or -1 (lib/voxel_sides.glsl, twoSidedAxis).
+inline int thinWallAxis(float opacity) {
+    if (opacity >= 1.0f) return -1;
+    const int code = int((1.0f - opacity) / shader::TWO_SIDED_OPACITY_STEP + 0.5f);
+    return code >= 1 && code <= 3 ? code - 1 : -1;
+}
+
+// radianceSeen: a thin wall's voxel shows a ray along d the side it meets
+// (direct + reflected), from its side texel t.
+inline glm::vec3 thinWallSideSeen(glm::uvec4 t, int axis, glm::vec3 d) {
+    const bool plusSide = d[axis] < 0.0f;
+    return vxgi::unpackRgb9e5(plusSide ? t.x : t.y) + vxgi::unpackRgb9e5(plusSide ? t.z : t.w);
+}
+
 // Where a ray starts: a voxel's rays that start inside another surface's voxel
 // meet its back (no light); a pixel's pass that voxel when they move away from
 // its plane and start in front of it (up to half a voxel behind it for a
@@ -148,7 +188,8 @@ enum class RayStart { Voxel, Pixel };
 // (seenFromFront in lib/voxel_sides.glsl).
 // `tHit` (optional) receives where the ray entered the voxel it stopped at
 // (infinity where it left the grid), as ambient occlusion weighs it.
-// `edges` (optional): --edge-voxels faces.
+// `edges` (optional): the voxels' extents and side light (EdgeModel), with
+// its `faces` setting.
 template <typename Own, typename NormalAt>
 glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&& own, NormalAt&& normalAt,
                    RayStart start, bool backsDark = true, float* tHit = nullptr, const EdgeModel* edges = nullptr) {
@@ -173,7 +214,10 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
             if (c[a] < 0 || c[a] >= n) return glm::vec3(0.0f);
         const glm::vec4 r = radiance.at(c.x, c.y, c.z);
         const int a = tMax.x <= tMax.y && tMax.x <= tMax.z ? 0 : (tMax.y <= tMax.z ? 1 : 2);
-        const bool passes = r.a > 0.0f && edges && rayPassesBeside(c, normalAt(c), edges->extents(c), p, d, t, tMax[a]);
+        const bool passes =
+            r.a > 0.0f && edges && edges->faces && rayPassesBeside(c, normalAt(c), edges->extents(c), p, d, t, tMax[a]);
+        const int wallAxis = r.a > 0.0f && edges ? thinWallAxis(r.a) : -1;
+        const bool thinEnds = wallAxis >= 0 && edges->thinWallEnds;
         if (r.a > 0.0f && !own(c) && !beside(c, normalAt(c)) && !(passes && !(first && start == RayStart::Pixel))) {
             const glm::vec3 nc = normalAt(c);
             if (tHit) *tHit = t;
@@ -184,12 +228,15 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
                 besideAt = glm::vec3(c) + 0.5f;
                 besideN = nc;
             }
-            if (leaves || rayPassesInFront(c, nc, p, d, t, tMax[a]) || passes) {
+            if (leaves || rayPassesInFront(c, nc, p, d, t, tMax[a]) || passes ||
+                (thinEnds && rayPassesThinWallEnd(c, wallAxis, edges->extents(c), p, d, t, tMax[a]))) {
                 if (tHit) *tHit = INFINITY;
             } else {
                 // A voxel that shows its faces weighs them itself, unfaded.
-                if (edges && r.a >= 1.0f && edges->showsFaces(c)) return edges->facesSeen(c, nc, d, r);
-                if (!backsDark || r.a < 1.0f) return glm::vec3(r);  // two-sided voxels (r.a < 1): not modelled here
+                if (edges && edges->faces && r.a >= 1.0f && edges->showsFaces(c)) return edges->facesSeen(c, nc, d, r);
+                if (wallAxis >= 0) return thinWallSideSeen(edges->sides(c), wallAxis, d);
+                // Without a model, two-sided voxels (r.a < 1) show their radiance, the darker side.
+                if (!backsDark || r.a < 1.0f) return glm::vec3(r);
                 const float fade = (shader::VOXEL_BACK_FADE_END - glm::dot(nc, d)) /
                                    (shader::VOXEL_BACK_FADE_END - shader::VOXEL_BACK_FADE_START);
                 return glm::vec3(r) * std::clamp(fade, 0.0f, 1.0f);
