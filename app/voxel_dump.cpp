@@ -43,6 +43,7 @@ void writeVoxelDump(const std::string& path, const gpu::Context& ctx, const vxgi
     const vxgi::DenseAttributes attributes = vxgi::readAttributes(ctx, volumes);
     const std::vector<glm::vec4> direct = vxgi::readDirectLight(ctx, volumes);
     const std::vector<glm::vec4> radiance = vxgi::readRadiance(ctx, volumes);
+    const std::vector<glm::uvec4> sides = vxgi::readSideLight(ctx, volumes);
     const uint32_t n = volumes.grid.n;
     const float size = volumes.grid.voxelSize;
     std::vector<float> rows;
@@ -59,11 +60,19 @@ void writeVoxelDump(const std::string& path, const gpu::Context& ctx, const vxgi
                 const float len = glm::length(normal);
                 normal = len > 1e-6f ? normal / len : glm::vec3(0.0f);
                 const glm::vec3 centre = volumes.grid.origin + (glm::vec3(x, y, z) + 0.5f) * size;
+                // Side light only where it is kept: one-sided slots hold whatever was there.
+                const float code = std::round(direct[i].a - 1.0f);
+                const bool twoSided = code >= 1.0f && code <= 3.0f;
+                const glm::vec3 plus = twoSided ? vxgi::unpackRgb9e5(sides[i].x) + vxgi::unpackRgb9e5(sides[i].z)
+                                                : glm::vec3(0.0f);
+                const glm::vec3 minus = twoSided ? vxgi::unpackRgb9e5(sides[i].y) + vxgi::unpackRgb9e5(sides[i].w)
+                                                 : glm::vec3(0.0f);
                 const float row[kVoxelDumpColumnCount] = {
                     float(x), float(y), float(z), centre.x, centre.y, centre.z, normal.x, normal.y, normal.z,
                     attributes.at(x, y, z, sh::CH_ALBEDO_R) / count, attributes.at(x, y, z, sh::CH_ALBEDO_G) / count,
                     attributes.at(x, y, z, sh::CH_ALBEDO_B) / count, direct[i].r, direct[i].g, direct[i].b,
-                    radiance[i].r, radiance[i].g, radiance[i].b, std::round(direct[i].a - 1.0f), count};
+                    radiance[i].r, radiance[i].g, radiance[i].b, code, count, plus.r, plus.g, plus.b, minus.r,
+                    minus.g, minus.b};
                 rows.insert(rows.end(), row, row + kVoxelDumpColumnCount);
             }
     const std::string header = npyHeader(rows.size() / kVoxelDumpColumnCount, kVoxelDumpColumnCount);

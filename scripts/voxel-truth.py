@@ -41,8 +41,8 @@ def load_dump(path):
         d = np.load(path)
     except (OSError, ValueError) as e:
         fail("%s: %s" % (path, e))
-    if d.ndim != 2 or d.shape[1] != 20 or d.dtype != np.float32:
-        fail("%s: not a dvsgi --voxel-dump table (float32, 20 columns)" % path)
+    if d.ndim != 2 or d.shape[1] != 26 or d.dtype != np.float32:
+        fail("%s: not a dvsgi --voxel-dump table (float32, 26 columns)" % path)
     return d
 
 

@@ -27,8 +27,8 @@ R.render("no bounce", "--bounces", "0", "--voxel-dump", dumps[0], "--metrics", m
 R.render("one bounce", "--bounces", "1", "--voxel-dump", dumps[1])
 d0, d1 = np.load(dumps[0]), np.load(dumps[1])
 grid = json.load(open(metrics))["voxels"]
-R.check(d0.dtype == np.float32 and d0.ndim == 2 and d0.shape[1] == 20 and d0.shape[0] > 1000,
-        "a float32 table of 20 columns, %d voxels" % d0.shape[0])
+R.check(d0.dtype == np.float32 and d0.ndim == 2 and d0.shape[1] == 26 and d0.shape[0] > 1000,
+        "a float32 table of 26 columns, %d voxels" % d0.shape[0])
 R.check(np.isfinite(d0).all() and np.isfinite(d1).all(), "every value finite")
 g = d0[:, :3]
 R.check(np.array_equal(g, d1[:, :3]) and g.min() >= 0 and g.max() < grid["n"] and
@@ -40,6 +40,13 @@ R.check(np.all((np.abs(length - 1) < 1e-4) | (length == 0)), "normals unit (or n
 one = d0[:, 18] == 0
 R.check(set(np.unique(d0[:, 18])) <= {0, 1, 2, 3, 4} and one.mean() > 0.9, "side codes 0-4, mostly one-sided")
 R.check(np.abs(d0[one, 15:18] - d0[one, 12:15]).max() < 1e-6, "no bounce: one-sided voxels' radiance is their direct light")
+R.check(np.all(d0[one, 20:26] == 0), "one-sided voxels: no side light")
+# A voxel two-sided along one axis shows the radiance volume its darker side (RGB9E5 sides, half-float radiance).
+two = (d1[:, 18] >= 1) & (d1[:, 18] <= 3)
+lum = np.array([0.2126, 0.7152, 0.0722])
+darker = np.minimum(d1[two, 20:23] @ lum, d1[two, 23:26] @ lum)
+R.check(two.sum() > 0 and np.allclose(darker, d1[two, 15:18] @ lum, rtol=0.02, atol=1e-4),
+        "%d two-sided voxels: the radiance is the darker side's light" % two.sum())
 lit = one & (d1[:, 9:12].max(axis=1) > 0)
 gain = (d1[lit, 15:18] - d1[lit, 12:15]).sum(axis=1)
 R.check(gain.min() > -1e-3 and (gain > 0).mean() > 0.9, "one bounce adds light to most voxels (%.3f)" % (gain > 0).mean())
