@@ -90,30 +90,41 @@ Rgba16Volume radianceAfter(const scene::Scene& s, uint32_t bounces, RayInputs* i
 
 class BounceRays : public GpuTest {};
 
+// One voxel bounce against the CPU march, summed over the inner wall voxels
+// but the opening's: what the GPU's bounce added to each (after - before)
+// and kRho times the CPU's mean over the same rays.
+struct WallSums {
+    double gpu = 0.0, cpu = 0.0, worst = 0.0;
+    int count = 0;
+    double ratio() const { return gpu / cpu; }
+};
+WallSums compareWalls(const Rgba16Volume& before, const Rgba16Volume& after, const VoxelReadback& attributes,
+                      const EdgeModel& model) {
+    WallSums w;
+    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
+        if (v.y == kHigh) return;  // the opening
+        const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
+        const float cpu = kRho * cpuRays(before, attributes, v, wallNormal(v), &model);
+        w.gpu += gpu;
+        w.cpu += cpu;
+        w.worst = std::max(w.worst, double(std::fabs(gpu - cpu)));
+        ++w.count;
+    });
+    return w;
+}
+
 TEST_F(BounceRays, MatchTheSameRaysMarchedOnTheCpu) {
     scene::Scene s;
     addInwardBox(s, addMaterial(s, glm::vec3(kRho), glm::vec3(kL)), glm::vec3(0.0f), kHalf, true);
     addTopDownCamera(s, 0.0f, 1.0f);
     RayInputs in;
     const Rgba16Volume before = radianceAfter(s, 0, &in), after = radianceAfter(s, 1);
-    const VoxelReadback& attributes = in.attributes;
-    const EdgeModel model = edgeModel(attributes, in.extents, in.sides, false);
-    double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
-    int count = 0;
-    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
-        if (v.y == kHigh) return;  // the opening
-        const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
-        const float cpu = kRho * cpuRays(before, attributes, v, wallNormal(v), &model);
-        sumGpu += gpu;
-        sumCpu += cpu;
-        worst = std::max(worst, double(std::fabs(gpu - cpu)));
-        ++count;
-    });
-    std::printf("  %d wall voxels: reflected light GPU %.5f, CPU %.5f (%+.3f%%); worst voxel off by %.4f\n", count,
-                sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
-    ASSERT_GT(count, 1000);
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
-    EXPECT_LT(worst, 0.02);
+    const WallSums w = compareWalls(before, after, in.attributes, edgeModel(in.attributes, in.extents, in.sides, false));
+    std::printf("  %d wall voxels: reflected light GPU %.5f, CPU %.5f (%+.3f%%); worst voxel off by %.4f\n", w.count,
+                w.gpu / w.count, w.cpu / w.count, 100.0 * (w.ratio() - 1.0), w.worst);
+    ASSERT_GT(w.count, 1000);
+    EXPECT_NEAR(w.ratio(), 1.0, 0.002);
+    EXPECT_LT(w.worst, 0.02);
 }
 
 TEST_F(BounceRays, EdgeFacesMatchTheSameRaysMarchedOnTheCpu) {
@@ -132,24 +143,14 @@ TEST_F(BounceRays, EdgeFacesMatchTheSameRaysMarchedOnTheCpu) {
                 const uint32_t e = in.extents[voxelIndex(kN, x, y, z)];
                 partial += e != 0u && e != shader::VOXEL_EXTENT_ALL;
             }
-    double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
-    int count = 0;
-    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
-        if (v.y == kHigh) return;
-        const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
-        const float cpu = kRho * cpuRays(before, in.attributes, v, wallNormal(v), &edges);
-        sumGpu += gpu;
-        sumCpu += cpu;
-        worst = std::max(worst, double(std::fabs(gpu - cpu)));
-        ++count;
-    });
+    const WallSums w = compareWalls(before, after, in.attributes, edges);
     std::printf("  %d voxels show faces, %d reached in part; %d wall voxels: reflected light GPU %.5f, CPU %.5f "
                 "(%+.3f%%); worst voxel off by %.4f\n",
-                faceVoxels, partial, count, sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0), worst);
+                faceVoxels, partial, w.count, w.gpu / w.count, w.cpu / w.count, 100.0 * (w.ratio() - 1.0), w.worst);
     ASSERT_GT(faceVoxels, 100) << "the box's edges";
     ASSERT_GT(partial, 1000) << "its walls lie in the middle of their voxels";
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
-    EXPECT_LT(worst, 0.02);
+    EXPECT_NEAR(w.ratio(), 1.0, 0.002);
+    EXPECT_LT(w.worst, 0.02);
 }
 
 // A slab thinner than a voxel across the box, lying in the middle of voxel
@@ -171,30 +172,19 @@ TEST_F(BounceRays, ThinSlabMatchesTheSameRaysMarchedOnTheCpu) {
     int slabVoxels = 0;
     for (int z = 0; z < int(kN); ++z)
         for (int x = 0; x < int(kN); ++x) slabVoxels += thinWallAxis(before.at(x, 16, z).a) == 1;
-    double sumGpu = 0.0, sumCpu = 0.0, sumCpuWhole = 0.0, worst = 0.0;
-    int count = 0;
-    forEachWallVoxel(kLow, kHigh, kInnerLo, kInnerHi, [&](glm::ivec3 v) {
-        if (v.y == kHigh) return;
-        const float gpu = after.at(v.x, v.y, v.z).r - before.at(v.x, v.y, v.z).r;
-        model.thinWallEnds = true;
-        const float cpu = kRho * cpuRays(before, in.attributes, v, wallNormal(v), &model);
-        model.thinWallEnds = false;
-        sumCpuWhole += kRho * cpuRays(before, in.attributes, v, wallNormal(v), &model);
-        sumGpu += gpu;
-        sumCpu += cpu;
-        worst = std::max(worst, double(std::fabs(gpu - cpu)));
-        ++count;
-    });
+    const WallSums w = compareWalls(before, after, in.attributes, model);
+    model.thinWallEnds = false;
+    const WallSums whole = compareWalls(before, after, in.attributes, model);
     std::printf("  %d voxels of the slab two-sided across y; %d wall voxels: reflected light GPU %.5f, CPU %.5f "
                 "(%+.3f%%), CPU with the slab's ends whole %.5f (%+.3f%%); worst voxel off by %.4f\n",
-                slabVoxels, count, sumGpu / count, sumCpu / count, 100.0 * (sumGpu / sumCpu - 1.0),
-                sumCpuWhole / count, 100.0 * (sumCpuWhole / sumCpu - 1.0), worst);
+                slabVoxels, w.count, w.gpu / w.count, w.cpu / w.count, 100.0 * (w.ratio() - 1.0),
+                whole.cpu / w.count, 100.0 * (whole.cpu / w.cpu - 1.0), w.worst);
     ASSERT_GT(slabVoxels, 100) << "the slab's voxels hold its two sides";
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.002);
-    EXPECT_LT(worst, 0.02);
+    EXPECT_NEAR(w.ratio(), 1.0, 0.002);
+    EXPECT_LT(w.worst, 0.02);
     // The rule matters here: the slab's ends taken whole show the rays that
     // run past them under the slab its emitting top.
-    EXPECT_GT(sumCpuWhole / sumCpu, 1.01);
+    EXPECT_GT(whole.cpu / w.cpu, 1.01);
 }
 
 }  // namespace
