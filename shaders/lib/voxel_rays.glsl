@@ -156,7 +156,8 @@ bool passesThinWallEnd(ivec3 c, float opacity, uint slot, vec3 p, vec3 d, vec3 i
 // `seen`, or else t moved to the next cell. It ends at the first occupied
 // voxel not on the surface of `self` (centre, normal n), nor on that of
 // `besideAt` (normal besideN; a zero normal: none), that it does not pass in
-// front of (that voxel's light), or where it leaves the grid (nothing).
+// front of, beside (passesBeside) or beside the end of (passesThinWallEnd)
+// (that voxel's light), or where it leaves the grid (nothing).
 // Empty space is crossed a whole cell at a time, sixteen voxels, eight, four
 // or two, wherever the occupancy bits show the cell empty (`offsets`: each
 // level's rayOccupancyOffset). With `backsDark` a one-sided voxel met from
