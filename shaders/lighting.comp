@@ -82,8 +82,9 @@ float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
 // two voxels short of the emitter's plane, so the emitter's own voxel layer
 // (and a ceiling beside it in the same layer) does not shadow it, as the
 // voxels' own rays to a patch stop (inject.comp).
-float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
-    float s = grid.originSize.w, offset = pc.shadow.z;
+// `offset`: where the ray starts off the surface, in voxels (rayStartOffset).
+float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal, float offset) {
+    float s = grid.originSize.w;
     vec3 p = (P - grid.originSize.xyz) / s;
     vec3 toEmitter = L * (dist / s) - N * offset;  // from the ray's origin, in voxels
     float reach = length(toEmitter);
@@ -91,8 +92,15 @@ float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emit
     reach -= 2.0 / max(abs(dot(emitterNormal, d)), 0.2);
     return reach <= 0.0 || pixelRayClear(p, N, d, offset, reach) ? 1.0 : 0.0;
 }
+// The pixel's rays start as its gather's do (lib/voxel_rays.glsl, pixelRayOffset):
+// before a surface that faces back within the offset.
+float rayStartOffset(vec3 P, vec3 N) {
+    float s = grid.originSize.w;
+    return pixelRayOffset((P - grid.originSize.xyz) / s, N, pc.shadow.z, int(grid.dims.x));
+}
 #else
-float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal) {
+float rayStartOffset(vec3 P, vec3 N) { return 0.0; }
+float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal, float offset) {
     ConeParams p = pc.cone;
     float s = traceGrid(CONE_FIRST_LEVEL).originSize.w;
     float tanHalf = max(radius / dist, pc.shadow.y);
@@ -142,6 +150,7 @@ void main() {
 
     vec3 radiance = emission.rgb;
     float visSum = 0.0, visCount = 0.0;
+    float rayStart = -1.0;  // computed at the first patch that needs it
     for (uint i = 0u; i < frame.sizes.z; ++i) {
         vec3 L;
         float dist;
@@ -153,7 +162,8 @@ void main() {
             // No shadow map for a patch: a ray through the voxels (AREA_RAYS)
             // or a cone as wide as the patch looks from here, stopping short
             // of the emitter's own voxels.
-            vis = areaVisibility(P, N, L, dist, sqrt(lights[i].radiant.w), lights[i].direction.xyz);
+            if (rayStart < 0.0) rayStart = rayStartOffset(P, N);
+            vis = areaVisibility(P, N, L, dist, sqrt(lights[i].radiant.w), lights[i].direction.xyz, rayStart);
         } else if (pc.shadow.x > 0.5)
             vis = coneVisibility(P, N, L, dist);
         else

@@ -296,6 +296,37 @@ float pixelRayStart(vec3 origin, vec3 p, vec3 n, vec3 d, vec3 inv, int N, out ve
     return exitDistance(origin, inv, vec3(c), 1.0) + 1e-3;
 }
 
+// How far off surface point p (voxel units, normal n) a pixel's rays start:
+// `offset` voxels along n, or less where a surface that faces back toward p
+// lies within that stretch, so that the rays meet it rather than start past
+// it. Walking along n from p's own voxel, the first occupied voxel that holds
+// a one-sided surface turned toward p (its normal within 60 degrees of -n), a
+// thin wall across an axis near n, or thin walls along several axes stops the
+// walk, and the rays start just before it. Starting a whole voxel off, a
+// brick wall's pixels in Sponza started past the banner hanging 13 cm in front
+// of it and saw the sunlit atrium (docs/quality.md, "Surfaces closer than the
+// rays' start"). The pixel's own voxel is not looked at: a thin wall's pixels
+// lie in a voxel that holds the wall's other side.
+float pixelRayOffset(vec3 p, vec3 n, float offset, int N) {
+    vec3 inv = rayInverse(n);
+    float t = exitDistance(p, inv, floor(p), 1.0) + 1e-3;
+    for (int k = 0; k < 4 && t < offset; ++k) {
+        ivec3 c = ivec3(floor(p + n * t));
+        if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) break;
+        vec4 r = RAY_RADIANCE(c);
+        if (r.a > 0.0) {
+            uint code = sideCodeOfOpacity(r.a);
+            int axis = twoSidedAxis(code);
+            uint slot = voxelSlotAt(c);
+            vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+            bool facing = code == SIDE_ONE ? dot(nc, n) < -0.5 : (axis < 0 || abs(n[axis]) > 0.7);
+            if (facing) return max(t - RAY_GAP_MARGIN, 0.0);
+        }
+        t = exitDistance(p, inv, vec3(c), 1.0) + 1e-3;
+    }
+    return offset;
+}
+
 // Whether a ray from `offset` voxels off surface point p (voxel units, normal
 // n) along unit d meets no occupied voxel within `reach` voxels of its
 // origin: a pixel's shadow ray, starting and passing surfaces as the
@@ -330,7 +361,7 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
     vec3 tx, b;
     rayDisk(n, tx, b);
     vec2 shift = rayShift(seed);
-    vec3 origin = p + n * offset;
+    vec3 origin = p + n * pixelRayOffset(p, n, offset, N);
     uvec4 offsets = rayOccupancyOffsets();
     vec3 sum = vec3(0.0), d = n, inv = vec3(1.0), besideAt = vec3(0.0), besideN = vec3(0.0);
     occlusion = 0.0;

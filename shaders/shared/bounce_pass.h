@@ -84,6 +84,9 @@ DVSGI_FUNCTION uint rayOccupancyOffset(uint n, uint level) {
 
 // The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU
 // march: the R2 sequence over the unit square, shifted per voxel by a hash.
+// A pixel's rays start this far (voxels) before a surface that faces back
+// toward it within their offset (lib/voxel_rays.glsl, pixelRayOffset).
+DVSGI_CONST(float, RAY_GAP_MARGIN, 0.05);
 DVSGI_CONST(float, RAY_R2_U, 0.7548776662);
 DVSGI_CONST(float, RAY_R2_V, 0.5698402910);
 DVSGI_FUNCTION uint rayHash(uint x) {

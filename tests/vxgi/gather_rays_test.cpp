@@ -106,7 +106,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
                 return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
             };
             // Rays starting in a one-sided voxel of another surface, behind its centre's plane.
-            const glm::vec3 origin = p + n * kOffset;
+            const glm::vec3 origin = p + n * pixelRayOffset(radiance, normalAt, p, n, kOffset);
             const glm::ivec3 c = glm::ivec3(glm::floor(origin));
             const glm::vec3 nc = normalAt(c);
             behind += radiance.at(c.x, c.y, c.z).a >= 1.0f && !own(c) && glm::dot(nc, nc) > 0.25f &&
@@ -114,8 +114,8 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
-                cpu += marchRay(radiance, p + n * kOffset, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel, true,
-                                nullptr, &edges)
+                cpu += marchRay(radiance, origin, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel, true, nullptr,
+                                &edges)
                            .r;
             cpu /= kRays;
             const double gpu = img.at(x, y)[0];
@@ -142,6 +142,80 @@ INSTANTIATE_TEST_SUITE_P(WallAt, GatherRaysBox, ::testing::Values(0.71875f, 0.73
                          [](const ::testing::TestParamInfo<float>& i) {
                              return i.param < 0.72f ? std::string("VoxelCentres") : std::string("OffCentres");
                          });
+
+// A surface closer to the floor than the rays' start: a black quad facing
+// down hangs 1.3 voxels over the floor of the open box of emissive walls, and
+// the rays start 2 voxels off the floor. They start just before the quad's
+// voxel instead (pixelRayOffset), so the floor under it sees the quad, not
+// the walls beyond it. The camera looks down from between the two, with a
+// wide view, at the floor under the quad's middle.
+TEST_F(GatherRays, SurfaceCloserThanTheStartIsMetNotSkipped) {
+    constexpr float kHalf = 0.71875f, kStart = 2.0f;
+    const float voxel = 2.0f / float(kN), floorY = -kHalf, quadY = floorY + 1.3f * voxel;
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), kHalf, true);
+    addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.0f, quadY, 0.0f), 5.0f * voxel,
+            glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)));
+    addTopDownCamera(s, floorY + 0.9f * voxel, glm::radians(150.0f));
+    render::RenderSettings rs = unitBoxGridSettings(kN, 256);
+    rs.width = rs.height = 48;
+    rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 0;
+    rs.gather.trace = render::GatherTrace::Rays;
+    rs.gather.rays = kRays;
+    rs.gather.rayOffsetVoxels = kStart;
+    rs.gather.traceScale = 1.0f;
+    rs.gather.spin = false;
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    const image::ImageRGBA32F img = r.readOutput();
+    const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
+    const VoxelReadback attributes = readVoxels(*r.volumes());
+    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, false);
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
+    double sumGpu = 0.0, sumCpu = 0.0, sumSkipping = 0.0, worst = 0.0, start = 0.0;
+    int count = 0;
+    for (uint32_t y = 0; y < rs.height; ++y)
+        for (uint32_t x = 0; x < rs.width; ++x) {
+            const glm::vec3 world = pixelOnPlane(s, rs, x, y, floorY);
+            if (std::max(std::fabs(world.x), std::fabs(world.z)) > 2.0f * voxel) continue;  // under the quad's middle
+            const glm::vec3 p = (world + 1.0f) / voxel;
+            const auto own = [&](glm::ivec3 c) {
+                return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
+            };
+            const float offset = pixelRayOffset(radiance, normalAt, p, n, kStart);
+            const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
+            double cpu = 0.0, skipping = 0.0;
+            for (uint32_t i = 0; i < kRays; ++i) {
+                const glm::vec3 d = cosineRay(n, seed, i);
+                cpu += marchRay(radiance, p + n * offset, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
+                skipping += marchRay(radiance, p + n * kStart, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
+            }
+            cpu /= kRays;
+            skipping /= kRays;
+            const double gpu = img.at(x, y)[0];
+            sumGpu += gpu;
+            sumCpu += cpu;
+            sumSkipping += skipping;
+            start += offset;
+            worst = std::max(worst, std::fabs(gpu - cpu));
+            ++count;
+        }
+    std::printf("  %d floor pixels under the quad, rays starting %.2f voxels up: E/pi GPU %.5f, CPU %.5f; starting "
+                "%.0f voxels up, past the quad: %.5f; worst pixel off by %.4f\n",
+                count, start / count, sumGpu / count, sumCpu / count, kStart, sumSkipping / count, worst);
+    ASSERT_GT(count, 200);
+    EXPECT_NEAR(start / count, 0.45, 0.01);  // half a voxel to the quad's voxel, less the margin
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.01);
+    EXPECT_LT(worst, 0.5 / kRays);
+    // Under a black quad 4.5 voxels wide on each side, 0.85 voxels above the
+    // rays' start, only grazing rays get out: 3 % of the cosine-weighted
+    // hemisphere for a disc that wide. Started past it, they see the walls.
+    EXPECT_LT(sumGpu / count, 0.1);
+    EXPECT_GT(sumSkipping / count, 0.4);
+}
 
 // The rays' ambient occlusion, the mean over a pixel's rays of
 // f(r) = 1 / (1 + lambda r) at the distance r (voxels) where each stops, under

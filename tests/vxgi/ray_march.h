@@ -173,6 +173,37 @@ inline glm::vec3 thinWallSideSeen(glm::uvec4 t, int axis, glm::vec3 d) {
     return vxgi::unpackRgb9e5(plusSide ? t.x : t.y) + vxgi::unpackRgb9e5(plusSide ? t.z : t.w);
 }
 
+// lib/voxel_rays.glsl's pixelRayOffset: how far off surface point p (voxel
+// units, normal n) a pixel's rays start, `offset` voxels or just before the
+// first voxel past p's own, within that stretch, whose surface faces back
+// toward p (one-sided and turned toward it, or a thin wall across an axis
+// near n, or thin walls along several axes).
+template <typename NormalAt>
+float pixelRayOffset(const Rgba16Volume& radiance, NormalAt&& normalAt, glm::vec3 p, glm::vec3 n, float offset) {
+    const int size = int(radiance.n);
+    const auto exitOf = [&](glm::ivec3 c) {
+        float t = INFINITY;
+        for (int a = 0; a < 3; ++a) {
+            if (std::fabs(n[a]) < 1e-7f) continue;
+            t = std::min(t, ((n[a] > 0.0f ? float(c[a] + 1) : float(c[a])) - p[a]) / n[a]);
+        }
+        return t;
+    };
+    float t = exitOf(glm::ivec3(glm::floor(p))) + 1e-3f;
+    for (int k = 0; k < 4 && t < offset; ++k) {
+        const glm::ivec3 c = glm::ivec3(glm::floor(p + n * t));
+        if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(size)))) break;
+        const glm::vec4 r = radiance.at(c.x, c.y, c.z);
+        if (r.a > 0.0f) {
+            const int axis = thinWallAxis(r.a);
+            const bool facing = r.a >= 1.0f ? glm::dot(normalAt(c), n) < -0.5f : (axis < 0 || std::fabs(n[axis]) > 0.7f);
+            if (facing) return std::max(t - shader::RAY_GAP_MARGIN, 0.0f);
+        }
+        t = exitOf(c) + 1e-3f;
+    }
+    return offset;
+}
+
 // Where a ray starts: a voxel's rays that start inside another surface's voxel
 // meet its back (no light); a pixel's pass that voxel when they move away from
 // its plane and start in front of it (up to half a voxel behind it for a

@@ -395,12 +395,15 @@ TEST_F(ThinWallPixels, SlabAcrossTheLatticeIsMeasuredAndBounded) {
     // Since rays pass beside thin walls' ends (2026-12-07), the one layer's
     // shadowed side 4-8 voxels away gets 0.0114-0.0115 (nearer the tracer's
     // 0.0082; the two layers' 0.0121-0.0131), 1-3 voxels away 0.0102-0.0117:
-    // spreads 1.15, 1.15 and, sunlit side, 1.13.
+    // spreads 1.15, 1.15 and, sunlit side, 1.13. Since the gather's rays start
+    // before a surface facing back within their offset (pixelRayOffset), the
+    // two layers' shadowed side 1-3 voxels away gets 0.0097-0.0107 (the
+    // tracer's 0.0069), the one layer's 0.0107-0.0116: spread 1.20.
     // Bounds 1.5x the values, and the spreads' excess over 1.
     EXPECT_LT(darkNear[0], 0.015);
     EXPECT_LT(darkNear[1], 0.017);
     EXPECT_LT(darkFar[1], 0.02);
-    EXPECT_LT(spreadDarkNear, 1.18);
+    EXPECT_LT(spreadDarkNear, 1.3);
     EXPECT_LT(spreadDarkFar, 1.23);
     EXPECT_LT(spreadLitNear, 1.2);
 }
