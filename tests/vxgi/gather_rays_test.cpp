@@ -30,6 +30,20 @@ constexpr float kOffset = 1.0f;  // voxels
 
 class GatherRays : public GpuTest {};
 
+// The gather by kRays rays per pixel over the voxels' own light (no voxel
+// bounce), starting `offset` voxels off the surface, every pixel traced
+// (trace pixel = image pixel, whose seed the CPU repeats) with its own rays
+// (not resolved with its neighbours').
+void gatherEveryPixelByRays(render::RenderSettings& rs, float offset) {
+    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
+    rs.voxelLight.bounces = 0;
+    rs.gather.trace = render::GatherTrace::Rays;
+    rs.gather.rays = kRays;
+    rs.gather.rayOffsetVoxels = offset;
+    rs.gather.traceScale = 1.0f;
+    rs.gather.spin = false;
+}
+
 // The rays of one block of GATHER_RAY_BLOCK^2 trace pixels (gatherRaySeed),
 // as points of the unit square before they are lifted onto the hemisphere:
 // together they are one R2 sequence, so every cell of a grid holding four
@@ -75,13 +89,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     render::RenderSettings rs = unitBoxGridSettings(kN, 256);
     rs.width = rs.height = 48;
     rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
-    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-    rs.voxelLight.bounces = 0;  // the walls' emission is all the voxels hold
-    rs.gather.trace = render::GatherTrace::Rays;
-    rs.gather.rays = kRays;
-    rs.gather.rayOffsetVoxels = kOffset;
-    rs.gather.traceScale = 1.0f;  // trace pixel = image pixel, whose seed the CPU repeats
-    rs.gather.spin = false;       // each pixel's own rays, not resolved with its neighbours'
+    gatherEveryPixelByRays(rs, kOffset);  // the walls' emission is all the voxels hold
     rs.voxelLight.edgeFaces = faces;
     render::Renderer r(context(), s, rs);
     r.renderFrame();
@@ -160,13 +168,7 @@ TEST_F(GatherRays, SurfaceCloserThanTheStartIsMetNotSkipped) {
     render::RenderSettings rs = unitBoxGridSettings(kN, 256);
     rs.width = rs.height = 48;
     rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
-    rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-    rs.voxelLight.bounces = 0;
-    rs.gather.trace = render::GatherTrace::Rays;
-    rs.gather.rays = kRays;
-    rs.gather.rayOffsetVoxels = kStart;
-    rs.gather.traceScale = 1.0f;
-    rs.gather.spin = false;
+    gatherEveryPixelByRays(rs, kStart);
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     const image::ImageRGBA32F img = r.readOutput();
@@ -241,14 +243,8 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
         rs.voxelBoxMin = glm::vec3(-2.0f);
         rs.voxelBoxMax = glm::vec3(2.0f);
         rs.outputTerm = shader::TERM_AO;  // 1 - occlusion
-        rs.voxelLight.bounceMode = vxgi::BounceMode::Fixed;
-        rs.voxelLight.bounces = 0;
         rs.gather.aoLambda = lambda;
-        rs.gather.trace = render::GatherTrace::Rays;
-        rs.gather.rays = kRays;
-        rs.gather.rayOffsetVoxels = kOffset;
-        rs.gather.traceScale = 1.0f;
-        rs.gather.spin = false;
+        gatherEveryPixelByRays(rs, kOffset);
         render::Renderer r(context(), s, rs);
         r.renderFrame();
         const image::ImageRGBA32F img = r.readOutput();
