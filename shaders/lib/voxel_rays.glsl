@@ -310,7 +310,7 @@ float pixelRayStart(vec3 origin, vec3 p, vec3 n, vec3 d, vec3 inv, int N, out ve
 float pixelRayOffset(vec3 p, vec3 n, float offset, int N) {
     vec3 inv = rayInverse(n);
     float t = exitDistance(p, inv, floor(p), 1.0) + 1e-3;
-    for (int k = 0; k < 4 && t < offset; ++k) {
+    for (int k = 0; k < 3 * int(ceil(offset)) + 1 && t < offset; ++k) {  // the stretch crosses at most 3 ceil(offset) faces
         ivec3 c = ivec3(floor(p + n * t));
         if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) break;
         vec4 r = RAY_RADIANCE(c);

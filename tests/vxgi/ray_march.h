@@ -190,7 +190,7 @@ float pixelRayOffset(const Rgba16Volume& radiance, NormalAt&& normalAt, glm::vec
         return t;
     };
     float t = exitOf(glm::ivec3(glm::floor(p))) + 1e-3f;
-    for (int k = 0; k < 4 && t < offset; ++k) {
+    for (int k = 0; k < 3 * int(std::ceil(offset)) + 1 && t < offset; ++k) {
         const glm::ivec3 c = glm::ivec3(glm::floor(p + n * t));
         if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(size)))) break;
         const glm::vec4 r = radiance.at(c.x, c.y, c.z);
