@@ -14,53 +14,34 @@ Cycles' (mean-luminance ratio). A scene whose whole-image ratio looks right can
 hide floors too bright and ceilings too dark (docs/quality.md, "Thin walls'
 ends").
 """
+import importlib.util
+import os
 import sys
 
 import numpy as np
-import OpenImageIO as oiio
 
-LUM = np.array([0.2126, 0.7152, 0.0722])
-
-
-def fail(msg):
-    print("bounce-by-facing: " + msg, file=sys.stderr)
-    sys.exit(1)
-
-
-def read(path):
-    inp = oiio.ImageInput.open(path)
-    if inp is None:
-        fail("%s: cannot open (%s)" % (path, oiio.geterror()))
-    names = list(inp.spec().channelnames)
-    pixels = np.asarray(inp.read_image(format="float"), dtype=np.float64)
-    inp.close()
-    return pixels, names
-
-
-def layer(pixels, names, path, name, suffixes):
-    wanted = [name + "." + c for c in suffixes]
-    if not all(w in names for w in wanted):
-        fail("%s: no %s layer (write it with dvsgi render --aov)" % (path, name))
-    return pixels[..., [names.index(w) for w in wanted]]
+# The EXR reading of scripts/scene-compare.py, whose references these are.
+_spec = importlib.util.spec_from_file_location(
+    "scene_compare", os.path.join(os.path.dirname(os.path.abspath(__file__)), "scene-compare.py"))
+sc = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(sc)
 
 
 def main():
     if len(sys.argv) != 3:
-        fail("usage: scripts/bounce-by-facing.py REF_PREFIX FIRST_BOUNCE_AOV.exr")
+        sc.fail("usage: scripts/bounce-by-facing.py REF_PREFIX FIRST_BOUNCE_AOV.exr")
     prefix, aov_path = sys.argv[1], sys.argv[2]
-    b0, _ = read(prefix + "-b0.exr")
-    b1, _ = read(prefix + "-b1.exr")
-    aov, names = read(aov_path)
-    if b0.shape[:2] != aov.shape[:2] or b1.shape[:2] != aov.shape[:2]:
-        fail("%s: %dx%d, the references %dx%d" % (aov_path, aov.shape[1], aov.shape[0], b0.shape[1], b0.shape[0]))
-    first_ref = (b1[..., :3] - b0[..., :3]) @ LUM
-    first = layer(aov, names, aov_path, "indirect", "RGB") @ LUM
-    normal = layer(aov, names, aov_path, "normal", "XYZ")
+    first_ref = sc.luminance(prefix + "-b1.exr") - sc.luminance(prefix + "-b0.exr")
+    first = sc.luminance(aov_path, "indirect")
+    normal = sc.layer_pixels(aov_path, "normal", "XYZ")
+    if first_ref.shape != first.shape:
+        sc.fail("%s: %dx%d, the references %dx%d" %
+                (aov_path, first.shape[1], first.shape[0], first_ref.shape[1], first_ref.shape[0]))
     axis = np.argmax(np.abs(normal), axis=-1)
     sign = np.sign(np.take_along_axis(normal, axis[..., None], -1)[..., 0])
     total = first_ref.sum()
     if total <= 0.0:
-        fail("%s: the references' first bounce is empty" % prefix)
+        sc.fail("%s: the references' first bounce is empty" % prefix)
     print("%-8s %8s %12s %10s" % ("facing", "pixels", "share (ref)", "dvsgi/ref"))
     for a in range(3):
         for s in (1.0, -1.0):

@@ -22,6 +22,7 @@ dvsgi / Cycles:
 (| LABEL | direct | indirect | first | later | shadowed |, which needs FIRST_BOUNCE_AOV).
 """
 import json
+import os
 import sys
 
 import numpy as np
@@ -31,11 +32,13 @@ LUM = np.array([0.2126, 0.7152, 0.0722])
 
 
 def fail(msg):
-    print("scene-compare: " + msg, file=sys.stderr)
+    # Named after the script that was run: scripts/bounce-by-facing.py reads its images with these too.
+    print("%s: %s" % (os.path.splitext(os.path.basename(sys.argv[0]))[0], msg), file=sys.stderr)
     sys.exit(1)
 
 
-def luminance(path, layer=None):
+def layer_pixels(path, layer=None, channels="RGB"):
+    """The three channels of an EXR's `layer` (its first three channels without one), float64 H x W x 3."""
     inp = oiio.ImageInput.open(path)
     if inp is None:
         fail("%s: cannot open (%s)" % (path, oiio.geterror()))
@@ -43,16 +46,20 @@ def luminance(path, layer=None):
     pixels = np.asarray(inp.read_image(format="float"), dtype=np.float64)
     inp.close()
     if layer is None:
-        channels = [0, 1, 2]
+        index = [0, 1, 2]
     else:
-        wanted = [layer + "." + c for c in "RGB"]
+        wanted = [layer + "." + c for c in channels]
         if not all(w in names for w in wanted):
             fail("%s: no %s layer (write it with dvsgi render --aov)" % (path, layer))
-        channels = [names.index(w) for w in wanted]
-    y = pixels[:, :, channels] @ LUM
-    if not np.all(np.isfinite(y)):
+        index = [names.index(w) for w in wanted]
+    values = pixels[:, :, index]
+    if not np.all(np.isfinite(values)):
         fail("%s: non-finite pixels" % path)
-    return y
+    return values
+
+
+def luminance(path, layer=None):
+    return layer_pixels(path, layer) @ LUM
 
 
 def take_option(argv, name):
@@ -98,4 +105,5 @@ def main(argv):
             json.dump({k: float(v) for k, v in r.items()}, f, indent=2)
 
 
-main(sys.argv[1:])
+if __name__ == "__main__":
+    main(sys.argv[1:])

@@ -24,6 +24,11 @@ vec3 unpackRayNormal(uint word) {
     return (vec3(q) - (RAY_NORMAL_SCALE + 1.0)) / RAY_NORMAL_SCALE;
 }
 
+// The packed normal of `slot` (+ 1, as the index holds it; 0: none).
+vec3 slotRayNormal(uint slot) {
+    return slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+}
+
 // What a ray travelling along d sees of the occupied voxel in `slot` (+ 1, as
 // the index holds it) whose radiance texel is r: a two-sided voxel (lib/voxel_sides.glsl) shows the side it
 // meets (direct + reflected), others their radiance.
@@ -288,7 +293,7 @@ float pixelRayStart(vec3 origin, vec3 p, vec3 n, vec3 d, vec3 inv, int N, out ve
     vec4 r = RAY_RADIANCE(c);
     if (r.a <= 0.0) return 0.0;
     uint slot = voxelSlotAt(c);
-    vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+    vec3 nc = slotRayNormal(slot);
     float behind = sideCodeOfOpacity(r.a) == SIDE_ONE && dot(nc, nc) > 0.25 ? -0.5 : 0.0;
     if (onOwnSurface(c, nc, p, n) || dot(origin - (vec3(c) + 0.5), nc) <= behind || dot(d, nc) < 0.0) return 0.0;
     besideAt = vec3(c) + 0.5;
@@ -318,7 +323,7 @@ float pixelRayOffset(vec3 p, vec3 n, float offset, int N) {
             uint code = sideCodeOfOpacity(r.a);
             int axis = twoSidedAxis(code);
             uint slot = voxelSlotAt(c);
-            vec3 nc = slot != 0u ? unpackRayNormal(imageLoad(rayNormals, slotTexel(slot - 1u, 0u)).r) : vec3(0.0);
+            vec3 nc = slotRayNormal(slot);
             bool facing = code == SIDE_ONE ? dot(nc, n) < -0.5 : (axis < 0 || abs(n[axis]) > 0.7);
             if (facing) return max(t - RAY_GAP_MARGIN, 0.0);
         }

@@ -21,22 +21,8 @@ uint sideCode(vec3 pos, vec3 neg) {
 float sideCodeAlpha(uint code) { return 1.0 + float(code); }
 uint sideCodeOf(vec4 direct) { return uint(direct.a + 0.5) - 1u; }
 
-// The axis (0-2) along which a voxel with side code `code` is two-sided; -1
-// for SIDE_ONE and SIDE_SEVERAL.
-int twoSidedAxis(uint code) { return code >= 1u && code <= 3u ? int(code) - 1 : -1; }
-
-// The radiance volume's opacity of a voxel with side code `code`
-// (shared/voxel_data.h, TWO_SIDED_OPACITY_STEP).
-float twoSidedOpacity(uint code) { return 1.0 - float(code) * TWO_SIDED_OPACITY_STEP; }
-
-// Whether a radiance texel's opacity marks a two-sided voxel (occupied
-// one-sided voxels have 1, empty ones 0): a voxel whose side code is not SIDE_ONE.
-bool marksTwoSided(float opacity) { return opacity > 0.0 && opacity < 1.0; }
-
-// The side code a radiance texel's opacity holds (SIDE_ONE unless marked).
-uint sideCodeOfOpacity(float opacity) {
-    return marksTwoSided(opacity) ? uint((1.0 - opacity) / TWO_SIDED_OPACITY_STEP + 0.5) : SIDE_ONE;
-}
+// twoSidedAxis, twoSidedOpacity, marksTwoSided and sideCodeOfOpacity live in
+// shared/voxel_data.h, which the tests' CPU ray march shares.
 
 // Shared-exponent RGB (9-bit mantissas, 5-bit exponent, bias 15), as
 // VK_FORMAT_E5B9G9R9_UFLOAT_PACK32 stores it; negative inputs become 0.

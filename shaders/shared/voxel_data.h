@@ -89,6 +89,18 @@ DVSGI_CONST(uint, SIDE_SEVERAL, 4);  // two-sided along several axes: an edge or
 // (the tracer caps opacity at 0.9999), and the near samples read the
 // directional volumes there instead.
 DVSGI_CONST(float, TWO_SIDED_OPACITY_STEP, 0.00048828125);
+// The axis (0-2) along which a voxel with side code `code` is two-sided; -1
+// for SIDE_ONE and SIDE_SEVERAL.
+DVSGI_FUNCTION int twoSidedAxis(uint code) { return code >= 1u && code <= 3u ? int(code) - 1 : -1; }
+// The radiance volume's opacity of a voxel with side code `code`.
+DVSGI_FUNCTION float twoSidedOpacity(uint code) { return 1.0f - float(code) * TWO_SIDED_OPACITY_STEP; }
+// Whether a radiance texel's opacity marks a two-sided voxel (occupied
+// one-sided voxels have 1, empty ones 0): a voxel whose side code is not SIDE_ONE.
+DVSGI_FUNCTION bool marksTwoSided(float opacity) { return opacity > 0.0f && opacity < 1.0f; }
+// The side code a radiance texel's opacity holds (SIDE_ONE unless marked).
+DVSGI_FUNCTION uint sideCodeOfOpacity(float opacity) {
+    return marksTwoSided(opacity) ? uint((1.0f - opacity) / TWO_SIDED_OPACITY_STEP + 0.5f) : SIDE_ONE;
+}
 
 // A one-sided voxel shows its light to the rays that meet its front (with
 // --voxel-backs-dark, the default; the filter's directional volumes and the

@@ -240,7 +240,7 @@ TEST_F(InjectDirect, FilterShowsTwoSidedVoxelsSideBySide) {
                     if (dir == 0) {
                         ++counts[code];
                         // The radiance's opacity marks the voxels the filter looks up.
-                        EXPECT_EQ(t.a, 1.0f - float(code) * sh::TWO_SIDED_OPACITY_STEP);
+                        EXPECT_EQ(t.a, sh::twoSidedOpacity(code));
                     }
                     if (code == sh::SIDE_ONE) {
                         const float seen = float(seenFront(voxelNormal(channels(accum, x, y, z)), dir));

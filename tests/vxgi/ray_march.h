@@ -159,12 +159,8 @@ inline bool rayPassesThinWallEnd(glm::ivec3 c, int axis, uint32_t bits, glm::vec
 }
 
 // The axis (0-2) across which a voxel whose radiance opacity is `opacity` holds
-// a thin wall's two sides, or -1 (lib/voxel_sides.glsl, twoSidedAxis).
-inline int thinWallAxis(float opacity) {
-    if (opacity >= 1.0f) return -1;
-    const int code = int((1.0f - opacity) / shader::TWO_SIDED_OPACITY_STEP + 0.5f);
-    return code >= 1 && code <= 3 ? code - 1 : -1;
-}
+// a thin wall's two sides, or -1.
+inline int thinWallAxis(float opacity) { return shader::twoSidedAxis(shader::sideCodeOfOpacity(opacity)); }
 
 // radianceSeen: a thin wall's voxel shows a ray along d the side it meets
 // (direct + reflected), from its side texel t.
@@ -196,7 +192,8 @@ float pixelRayOffset(const Rgba16Volume& radiance, NormalAt&& normalAt, glm::vec
         const glm::vec4 r = radiance.at(c.x, c.y, c.z);
         if (r.a > 0.0f) {
             const int axis = thinWallAxis(r.a);
-            const bool facing = r.a >= 1.0f ? glm::dot(normalAt(c), n) < -0.5f : (axis < 0 || std::fabs(n[axis]) > 0.7f);
+            const bool facing = shader::sideCodeOfOpacity(r.a) == shader::SIDE_ONE ? glm::dot(normalAt(c), n) < -0.5f
+                                                                               : (axis < 0 || std::fabs(n[axis]) > 0.7f);
             if (facing) return std::max(t - shader::RAY_GAP_MARGIN, 0.0f);
         }
         t = exitOf(c) + 1e-3f;
