@@ -84,7 +84,7 @@ DVSGI_CONST(uint, SIDE_SEVERAL, 4);  // two-sided along several axes: an edge or
 // The radiance volume's opacity of a voxel with side code c other than
 // SIDE_ONE: 1 - c * 2^-11, fp16 values just below 1, so that the filter looks
 // up the side light of these voxels only and the per-pixel cones tell a thin
-// wall's axis (lib/voxel_sides.glsl, twoSidedOpacity). Cones sampling the
+// wall's axis (twoSidedOpacity below). Cones sampling the
 // radiance volume let through under 2e-3 of such a voxel instead of 1e-4
 // (the tracer caps opacity at 0.9999), and the near samples read the
 // directional volumes there instead.
