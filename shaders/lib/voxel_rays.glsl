@@ -332,12 +332,113 @@ float pixelRayOffset(vec3 p, vec3 n, float offset, int N) {
     return offset;
 }
 
+// Sheets closer than a pixel's rays' start. A curtain or banner hanging a
+// few centimetres in front of a wall, facing the way the wall does, lies in
+// the wall's own voxel or the next one along its normal. pixelRayOffset stops
+// only at surfaces that face back, and the march passes voxels facing the
+// pixel's way within a voxel and a half as its own surface, so the wall's rays
+// started past the sheet and saw what lies beyond it (docs/quality.md,
+// "Sheets closer than the rays' start"). The voxels' extents tell the two
+// apart: the sheet is where an eighth of the voxel holds a surface beyond an
+// empty eighth in front of the pixel.
+
+// Whether voxel c holds a sheet across axis a that a pixel facing n meets:
+// one-sided with its normal along a (within about 11 degrees) and turned the
+// pixel's way, or a thin wall's two sides across a; with its extents along a
+// known (not all the voxel), in `bits`.
+bool sheetAcross(ivec3 c, vec3 n, int a, int N, out uint slot, out vec4 r, out uint bits) {
+    slot = 0u;
+    r = vec4(0.0);
+    bits = 0u;
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N)))) return false;
+    r = RAY_RADIANCE(c);
+    if (r.a <= 0.0) return false;
+    slot = voxelSlotAt(c);
+    if (slot == 0u) return false;
+    bits = (voxelExtents[slot - 1u] >> (VOXEL_EXTENT_STEPS * uint(a))) & 0xffu;
+    if (bits == 0u || bits == 0xffu) return false;
+    uint code = sideCodeOfOpacity(r.a);
+    if (code != SIDE_ONE) return twoSidedAxis(code) == a;
+    vec3 nc = slotRayNormal(slot);
+    return abs(nc[a]) >= RAY_PLANE_AXIS_COS && nc[a] * n[a] > 0.0;
+}
+
+// The plane (along axis a, in voxel units) of a sheet in front of surface
+// point p (normal n within 45 degrees of a) nearer than `start`, or -1: in p's
+// own voxel past an empty eighth in front of p's, or in the next voxel along
+// n at least RAY_SHEET_GAP in front of p.
+float sheetAhead(vec3 p, vec3 n, float start, int N, out int a) {
+    vec3 m = abs(n);
+    a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    if (m[a] < 0.7) return -1.0;
+    int dir = n[a] > 0.0 ? 1 : -1;
+    ivec3 c = ivec3(floor(p));
+    uint slot, bits;
+    vec4 r;
+    float plane = -1.0;
+    if (sheetAcross(c, n, a, N, slot, r, bits)) {
+        // p's own surface: its eighth, and set eighths that start less than
+        // an eighth in front of p (p may lie on an eighth's border).
+        int own = clamp(int(floor((p[a] - float(c[a])) * 8.0)), 0, 7);
+        for (int e = own + dir; e >= 0 && e < 8 && ((bits >> uint(e)) & 1u) != 0u; e += dir) {
+            if ((float(c[a]) + float(dir > 0 ? e : e + 1) / 8.0 - p[a]) * float(dir) >= 0.125) break;
+            own = e;
+        }
+        int next = own + dir;
+        if (next >= 0 && next < 8 && ((bits >> uint(next)) & 1u) == 0u)
+            for (int e = next + dir; e >= 0 && e < 8; e += dir)
+                if (((bits >> uint(e)) & 1u) != 0u) {
+                    plane = float(c[a]) + float(dir > 0 ? e : e + 1) / 8.0;
+                    break;
+                }
+    }
+    if (plane < 0.0) {
+        c[a] += dir;
+        if (sheetAcross(c, n, a, N, slot, r, bits)) {
+            plane = float(c[a]) + (dir > 0 ? float(findLSB(bits)) : float(findMSB(bits) + 1)) / 8.0;
+            if ((plane - p[a]) * float(dir) < RAY_SHEET_GAP) plane = -1.0;
+        }
+    }
+    return plane >= 0.0 && (plane - p[a]) * float(dir) < start ? plane : -1.0;
+}
+
+// Whether a pixel's ray from p along d meets the sheet sheetAhead found
+// (plane along axis a): where the ray crosses the plane, in p's voxel column
+// or one beside it, a voxel of that layer holds a sheet across a in that
+// eighth. It sees that voxel's light as a ray meeting it (a one-sided sheet
+// met from behind, none with backsDark), and tHit is where it crosses.
+bool meetsSheet(vec3 p, vec3 n, vec3 d, int a, float plane, int N, bool backsDark, out vec3 seen, out float tHit) {
+    seen = vec3(0.0);
+    tHit = 0.0;
+    if (d[a] * n[a] <= 1e-4) return false;
+    tHit = (plane - p[a]) / d[a];
+    ivec3 c = ivec3(floor(p + d * tHit));
+    c[a] = int(floor(plane + (n[a] > 0.0 ? 1e-4 : -1e-4)));
+    ivec3 off = abs(c - ivec3(floor(p)));
+    off[a] = 0;
+    if (max(off.x, max(off.y, off.z)) > RAY_SHEET_REACH) return false;
+    uint slot, bits;
+    vec4 r;
+    if (!sheetAcross(c, n, a, N, slot, r, bits)) return false;
+    int eighth = int(round((plane - float(c[a])) * 8.0)) - (n[a] > 0.0 ? 0 : 1);
+    if (eighth < 0 || eighth > 7 || ((bits >> uint(eighth)) & 1u) == 0u) return false;
+    seen = radianceSeen(slot, r, d);
+    if (backsDark && sideCodeOfOpacity(r.a) == SIDE_ONE) seen *= seenFromFront(slotRayNormal(slot), d);
+    return true;
+}
+
 // Whether a ray from `offset` voxels off surface point p (voxel units, normal
 // n) along unit d meets no occupied voxel within `reach` voxels of its
 // origin: a pixel's shadow ray, starting and passing surfaces as the
 // pixel's gather rays do.
 bool pixelRayClear(vec3 p, vec3 n, vec3 d, float offset, float reach) {
     int N = int(grid.dims.x);
+    int axis;
+    vec3 seenSheet;
+    float tSheet;
+    float sheet = sheetAhead(p, n, offset, N, axis);
+    if (sheet >= 0.0 && meetsSheet(p, n, d, axis, sheet, N, false, seenSheet, tSheet) && tSheet < reach + offset)
+        return false;
     vec3 origin = p + n * offset, inv = rayInverse(d), seen, besideAt, besideN;
     uvec4 offsets = rayOccupancyOffsets();
     float t = pixelRayStart(origin, p, n, d, inv, N, besideAt, besideN);
@@ -366,7 +467,10 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
     vec3 tx, b;
     rayDisk(n, tx, b);
     vec2 shift = rayShift(seed);
-    vec3 origin = p + n * pixelRayOffset(p, n, offset, N);
+    float start = pixelRayOffset(p, n, offset, N);
+    vec3 origin = p + n * start;
+    int sheetAxis;
+    float sheet = sheetAhead(p, n, start, N, sheetAxis);
     uvec4 offsets = rayOccupancyOffsets();
     vec3 sum = vec3(0.0), d = n, inv = vec3(1.0), besideAt = vec3(0.0), besideN = vec3(0.0);
     occlusion = 0.0;
@@ -378,6 +482,14 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
         if (step == 0) {
             d = cosineRay(shift, ray, tx, b, n);
             inv = rayInverse(d);
+            vec3 seen;
+            float tSheet;
+            if (sheet >= 0.0 && meetsSheet(p, n, d, sheetAxis, sheet, N, backsDark, seen, tSheet)) {
+                sum += seen;
+                occlusion += 1.0 / (1.0 + aoLambda * tSheet);
+                ++ray;
+                continue;
+            }
             t = pixelRayStart(origin, p, n, d, inv, N, besideAt, besideN);
         }
         vec3 seen;

@@ -87,6 +87,13 @@ DVSGI_FUNCTION uint rayOccupancyOffset(uint n, uint level) {
 // A pixel's rays start this far (voxels) before a surface that faces back
 // toward it within their offset (lib/voxel_rays.glsl, pixelRayOffset).
 DVSGI_CONST(float, RAY_GAP_MARGIN, 0.05);
+// A sheet in the next voxel along a pixel's normal is another surface (not the
+// pixel's own, voxelized into two layers) when it lies at least this far
+// (voxels) in front of the pixel; a pixel's ray meets it where it crosses the
+// sheet's plane at most this many voxels beside the pixel's voxel column
+// (lib/voxel_rays.glsl, sheetAhead and meetsSheet).
+DVSGI_CONST(float, RAY_SHEET_GAP, 0.25);
+DVSGI_CONST(int, RAY_SHEET_REACH, 1);
 DVSGI_CONST(float, RAY_R2_U, 0.7548776662);
 DVSGI_CONST(float, RAY_R2_V, 0.5698402910);
 DVSGI_FUNCTION uint rayHash(uint x) {

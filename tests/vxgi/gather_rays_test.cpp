@@ -114,7 +114,8 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
                 return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
             };
             // Rays starting in a one-sided voxel of another surface, behind its centre's plane.
-            const glm::vec3 origin = p + n * pixelRayOffset(radiance, normalAt, p, n, kOffset);
+            const float start = pixelRayOffset(radiance, normalAt, p, n, kOffset);
+            const glm::vec3 origin = p + n * start;
             const glm::ivec3 c = glm::ivec3(glm::floor(origin));
             const glm::vec3 nc = normalAt(c);
             behind += radiance.at(c.x, c.y, c.z).a >= 1.0f && !own(c) && glm::dot(nc, nc) > 0.25f &&
@@ -122,9 +123,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
             const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
             double cpu = 0.0;
             for (uint32_t i = 0; i < kRays; ++i)
-                cpu += marchRay(radiance, origin, cosineRay(n, seed, i), own, normalAt, RayStart::Pixel, true, nullptr,
-                                &edges)
-                           .r;
+                cpu += pixelRay(radiance, p, n, start, cosineRay(n, seed, i), own, normalAt, edges).r;
             cpu /= kRays;
             const double gpu = img.at(x, y)[0];
             sumGpu += gpu;
@@ -192,7 +191,7 @@ TEST_F(GatherRays, SurfaceCloserThanTheStartIsMetNotSkipped) {
             double cpu = 0.0, skipping = 0.0;
             for (uint32_t i = 0; i < kRays; ++i) {
                 const glm::vec3 d = cosineRay(n, seed, i);
-                cpu += marchRay(radiance, p + n * offset, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
+                cpu += pixelRay(radiance, p, n, offset, d, own, normalAt, edges).r;
                 skipping += marchRay(radiance, p + n * kStart, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
             }
             cpu /= kRays;
@@ -218,6 +217,84 @@ TEST_F(GatherRays, SurfaceCloserThanTheStartIsMetNotSkipped) {
     EXPECT_LT(sumGpu / count, 0.1);
     EXPECT_GT(sumSkipping / count, 0.4);
 }
+
+// A sheet closer to the floor than the rays' start and facing the floor's way:
+// a black quad facing up hangs `gap` voxels over the floor of the open box of
+// emissive walls, in the floor's own voxel (0.4; the floor lies at the voxel's
+// middle) or in the next one up (0.7). The march would pass it as the floor's
+// own surface; the extents place it, so the rays that cross its plane within
+// a voxel of the pixel's column meet its back (sheetAhead, meetsSheet). The
+// camera looks down from between the two at the floor under the quad's middle.
+class GatherRaysSheet : public GatherRays, public ::testing::WithParamInterface<float> {};
+
+TEST_P(GatherRaysSheet, SheetInFrontOfTheStartIsMetFromBehind) {
+    const float gap = GetParam();
+    constexpr float kHalf = 0.71875f;
+    const float voxel = 2.0f / float(kN), floorY = -kHalf;
+    scene::Scene s;
+    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), kHalf, true);
+    addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.0f, floorY + gap * voxel, 0.0f), 5.0f * voxel);
+    addTopDownCamera(s, floorY + 0.4f * gap * voxel, glm::radians(150.0f));
+    render::RenderSettings rs = unitBoxGridSettings(kN, 256);
+    rs.width = rs.height = 48;
+    rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
+    gatherEveryPixelByRays(rs, kOffset);
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    const image::ImageRGBA32F img = r.readOutput();
+    const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
+    const VoxelReadback attributes = readVoxels(*r.volumes());
+    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, false);
+    const glm::vec3 n(0.0f, 1.0f, 0.0f);
+    const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
+    double sumGpu = 0.0, sumCpu = 0.0, sumPassing = 0.0, worst = 0.0;
+    int count = 0, found = 0;
+    for (uint32_t y = 0; y < rs.height; ++y)
+        for (uint32_t x = 0; x < rs.width; ++x) {
+            const glm::vec3 world = pixelOnPlane(s, rs, x, y, floorY);
+            if (std::max(std::fabs(world.x), std::fabs(world.z)) > 2.0f * voxel) continue;  // under the quad's middle
+            const glm::vec3 p = (world + 1.0f) / voxel;
+            const auto own = [&](glm::ivec3 c) {
+                return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
+            };
+            const float start = pixelRayOffset(radiance, normalAt, p, n, kOffset);
+            int axis;
+            found += sheetAhead(radiance, normalAt, edges, p, n, start, axis) >= 0.0f;
+            const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
+            double cpu = 0.0, passing = 0.0;
+            for (uint32_t i = 0; i < kRays; ++i) {
+                const glm::vec3 d = cosineRay(n, seed, i);
+                cpu += pixelRay(radiance, p, n, start, d, own, normalAt, edges).r;
+                passing += marchRay(radiance, p + n * start, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
+            }
+            cpu /= kRays;
+            passing /= kRays;
+            const double gpu = img.at(x, y)[0];
+            sumGpu += gpu;
+            sumCpu += cpu;
+            sumPassing += passing;
+            worst = std::max(worst, std::fabs(gpu - cpu));
+            ++count;
+        }
+    std::printf("  sheet %.1f voxels up: %d floor pixels under it, %d finding it: E/pi GPU %.5f, CPU %.5f; passing it "
+                "as the floor's own: %.5f; worst pixel off by %.4f\n",
+                gap, count, found, sumGpu / count, sumCpu / count, sumPassing / count, worst);
+    ASSERT_GT(count, 200);
+    EXPECT_EQ(found, count);
+    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.01);
+    EXPECT_LT(worst, 0.5 / kRays);
+    // The rays that cross the sheet's plane more than a voxel beside the
+    // pixel's column go on past it: those more than about 60 degrees off the
+    // normal, a quarter of the cosine-weighted hemisphere at most, and less
+    // where the sheet lies closer. Passing the sheet, every ray sees the walls.
+    EXPECT_LT(sumGpu / count, 0.25 * sumPassing / count);
+    EXPECT_GT(sumPassing / count, 0.4);
+}
+
+INSTANTIATE_TEST_SUITE_P(Gaps, GatherRaysSheet, ::testing::Values(0.4f, 0.7f),
+                         [](const ::testing::TestParamInfo<float>& i) {
+                             return i.param < 0.5f ? std::string("InTheFloorsVoxel") : std::string("InTheNextVoxel");
+                         });
 
 // The rays' ambient occlusion, the mean over a pixel's rays of
 // f(r) = 1 / (1 + lambda r) at the distance r (voxels) where each stops, under

@@ -276,6 +276,108 @@ glm::vec3 marchRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 d, Own&&
     }
 }
 
+// lib/voxel_rays.glsl's sheetAcross: whether voxel c holds a sheet across
+// axis a that a pixel facing n meets (one-sided along a, turned n's way, or a
+// thin wall across a), with its extents along a known; those in `bits`.
+template <typename NormalAt>
+bool sheetAcross(const Rgba16Volume& radiance, NormalAt&& normalAt, const EdgeModel& edges, glm::ivec3 c,
+                 glm::vec3 n, int a, uint32_t& bits) {
+    bits = 0u;
+    const int size = int(radiance.n);
+    if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(size))))
+        return false;
+    const glm::vec4 r = radiance.at(c.x, c.y, c.z);
+    if (r.a <= 0.0f) return false;
+    bits = (edges.extents(c) >> (shader::VOXEL_EXTENT_STEPS * a)) & 0xffu;
+    if (bits == 0u || bits == 0xffu) return false;
+    if (shader::sideCodeOfOpacity(r.a) != shader::SIDE_ONE) return thinWallAxis(r.a) == a;
+    const glm::vec3 nc = normalAt(c);
+    return std::fabs(nc[a]) >= 0.98f && nc[a] * n[a] > 0.0f;
+}
+
+// lib/voxel_rays.glsl's sheetAhead: the plane along axis `a` of a sheet in
+// front of surface point p (normal n) nearer than `start`, or -1.
+template <typename NormalAt>
+float sheetAhead(const Rgba16Volume& radiance, NormalAt&& normalAt, const EdgeModel& edges, glm::vec3 p, glm::vec3 n,
+                 float start, int& a) {
+    const glm::vec3 m = glm::abs(n);
+    a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    if (m[a] < 0.7f) return -1.0f;
+    const int dir = n[a] > 0.0f ? 1 : -1;
+    glm::ivec3 c = glm::ivec3(glm::floor(p));
+    uint32_t bits;
+    float plane = -1.0f;
+    if (sheetAcross(radiance, normalAt, edges, c, n, a, bits)) {
+        int own = std::clamp(int(std::floor((p[a] - float(c[a])) * 8.0f)), 0, 7);
+        for (int e = own + dir; e >= 0 && e < 8 && (bits & (1u << e)); e += dir) {
+            if ((float(c[a]) + float(dir > 0 ? e : e + 1) / 8.0f - p[a]) * float(dir) >= 0.125f) break;
+            own = e;
+        }
+        const int next = own + dir;
+        if (next >= 0 && next < 8 && !(bits & (1u << next)))
+            for (int e = next + dir; e >= 0 && e < 8; e += dir)
+                if (bits & (1u << e)) {
+                    plane = float(c[a]) + float(dir > 0 ? e : e + 1) / 8.0f;
+                    break;
+                }
+    }
+    if (plane < 0.0f) {
+        c[a] += dir;
+        if (sheetAcross(radiance, normalAt, edges, c, n, a, bits)) {
+            int first = 0, last = 7;
+            while (!(bits & (1u << first))) ++first;
+            while (!(bits & (1u << last))) --last;
+            plane = float(c[a]) + float(dir > 0 ? first : last + 1) / 8.0f;
+            if ((plane - p[a]) * float(dir) < shader::RAY_SHEET_GAP) plane = -1.0f;
+        }
+    }
+    return plane >= 0.0f && (plane - p[a]) * float(dir) < start ? plane : -1.0f;
+}
+
+// lib/voxel_rays.glsl's meetsSheet: whether the ray from p along d meets the
+// sheet sheetAhead found (plane along a), with what it sees there.
+template <typename NormalAt>
+bool meetsSheet(const Rgba16Volume& radiance, NormalAt&& normalAt, const EdgeModel& edges, glm::vec3 p, glm::vec3 n,
+                glm::vec3 d, int a, float plane, bool backsDark, glm::vec3& seen) {
+    seen = glm::vec3(0.0f);
+    if (d[a] * n[a] <= 1e-4f) return false;
+    const float t = (plane - p[a]) / d[a];
+    glm::ivec3 c = glm::ivec3(glm::floor(p + d * t));
+    c[a] = int(std::floor(plane + (n[a] > 0.0f ? 1e-4f : -1e-4f)));
+    glm::ivec3 off = glm::abs(c - glm::ivec3(glm::floor(p)));
+    off[a] = 0;
+    if (std::max({off.x, off.y, off.z}) > shader::RAY_SHEET_REACH) return false;
+    uint32_t bits;
+    if (!sheetAcross(radiance, normalAt, edges, c, n, a, bits)) return false;
+    const int eighth = int(std::round((plane - float(c[a])) * 8.0f)) - (n[a] > 0.0f ? 0 : 1);
+    if (eighth < 0 || eighth > 7 || !(bits & (1u << eighth))) return false;
+    const glm::vec4 r = radiance.at(c.x, c.y, c.z);
+    const int axis = thinWallAxis(r.a);
+    if (axis >= 0) {
+        seen = thinWallSideSeen(edges.sides(c), axis, d);
+        return true;
+    }
+    seen = glm::vec3(r);
+    if (backsDark) {
+        const float fade = (shader::VOXEL_BACK_FADE_END - glm::dot(normalAt(c), d)) /
+                           (shader::VOXEL_BACK_FADE_END - shader::VOXEL_BACK_FADE_START);
+        seen *= std::clamp(fade, 0.0f, 1.0f);
+    }
+    return true;
+}
+
+// A pixel's ray as pixelRaysCosine casts it: it meets a sheet closer than its
+// start (sheetAhead, meetsSheet), or else is marched from `start` voxels off p.
+template <typename Own, typename NormalAt>
+glm::vec3 pixelRay(const Rgba16Volume& radiance, glm::vec3 p, glm::vec3 n, float start, glm::vec3 d, Own&& own,
+                   NormalAt&& normalAt, const EdgeModel& edges, bool backsDark = true) {
+    int axis;
+    const float plane = sheetAhead(radiance, normalAt, edges, p, n, start, axis);
+    glm::vec3 seen;
+    if (plane >= 0.0f && meetsSheet(radiance, normalAt, edges, p, n, d, axis, plane, backsDark, seen)) return seen;
+    return marchRay(radiance, p + n * start, d, own, normalAt, RayStart::Pixel, backsDark, nullptr, &edges);
+}
+
 // The i-th of a set of rays cosine-distributed about n (frame t, b), the R2
 // sequence shifted by `seed`, as voxelRaysCosine and pixelRaysCosine cast them.
 inline glm::vec3 cosineRay(glm::vec3 n, uint32_t seed, uint32_t i) {
