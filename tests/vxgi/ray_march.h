@@ -334,8 +334,9 @@ float sheetAhead(const Rgba16Volume& radiance, NormalAt&& normalAt, const EdgeMo
     return plane >= 0.0f && (plane - p[a]) * float(dir) < start ? plane : -1.0f;
 }
 
-// lib/voxel_rays.glsl's meetsSheet: whether the ray from p along d meets the
-// sheet sheetAhead found (plane along a), with what it sees there.
+// lib/voxel_rays.glsl's sheetCells, meetsSheet and sheetSeen for one ray:
+// whether the ray from p along d meets the sheet sheetAhead found (plane
+// along a), with what it sees there.
 template <typename NormalAt>
 bool meetsSheet(const Rgba16Volume& radiance, NormalAt&& normalAt, const EdgeModel& edges, glm::vec3 p, glm::vec3 n,
                 glm::vec3 d, int a, float plane, bool backsDark, glm::vec3& seen) {
