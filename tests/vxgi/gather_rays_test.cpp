@@ -150,95 +150,30 @@ INSTANTIATE_TEST_SUITE_P(WallAt, GatherRaysBox, ::testing::Values(0.71875f, 0.73
                              return i.param < 0.72f ? std::string("VoxelCentres") : std::string("OffCentres");
                          });
 
-// A surface closer to the floor than the rays' start: a black quad facing
-// down hangs 1.3 voxels over the floor of the open box of emissive walls, and
-// the rays start 2 voxels off the floor. They start just before the quad's
-// voxel instead (pixelRayOffset), so the floor under it sees the quad, not
-// the walls beyond it. The camera looks down from between the two, with a
-// wide view, at the floor under the quad's middle.
-TEST_F(GatherRays, SurfaceCloserThanTheStartIsMetNotSkipped) {
-    constexpr float kHalf = 0.71875f, kStart = 2.0f;
-    const float voxel = 2.0f / float(kN), floorY = -kHalf, quadY = floorY + 1.3f * voxel;
-    scene::Scene s;
-    addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), kHalf, true);
-    addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.0f, quadY, 0.0f), 5.0f * voxel,
-            glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)));
-    addTopDownCamera(s, floorY + 0.9f * voxel, glm::radians(150.0f));
-    render::RenderSettings rs = unitBoxGridSettings(kN, 256);
-    rs.width = rs.height = 48;
-    rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
-    gatherEveryPixelByRays(rs, kStart);
-    render::Renderer r(context(), s, rs);
-    r.renderFrame();
-    const image::ImageRGBA32F img = r.readOutput();
-    const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
-    const VoxelReadback attributes = readVoxels(*r.volumes());
-    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, false);
-    const glm::vec3 n(0.0f, 1.0f, 0.0f);
-    const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
-    double sumGpu = 0.0, sumCpu = 0.0, sumSkipping = 0.0, worst = 0.0, start = 0.0;
-    int count = 0;
-    for (uint32_t y = 0; y < rs.height; ++y)
-        for (uint32_t x = 0; x < rs.width; ++x) {
-            const glm::vec3 world = pixelOnPlane(s, rs, x, y, floorY);
-            if (std::max(std::fabs(world.x), std::fabs(world.z)) > 2.0f * voxel) continue;  // under the quad's middle
-            const glm::vec3 p = (world + 1.0f) / voxel;
-            const auto own = [&](glm::ivec3 c) {
-                return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
-            };
-            const float offset = pixelRayOffset(radiance, normalAt, p, n, kStart);
-            const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
-            double cpu = 0.0, skipping = 0.0;
-            for (uint32_t i = 0; i < kRays; ++i) {
-                const glm::vec3 d = cosineRay(n, seed, i);
-                cpu += pixelRay(radiance, p, n, offset, d, own, normalAt, edges).r;
-                skipping += marchRay(radiance, p + n * kStart, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
-            }
-            cpu /= kRays;
-            skipping /= kRays;
-            const double gpu = img.at(x, y)[0];
-            sumGpu += gpu;
-            sumCpu += cpu;
-            sumSkipping += skipping;
-            start += offset;
-            worst = std::max(worst, std::fabs(gpu - cpu));
-            ++count;
-        }
-    std::printf("  %d floor pixels under the quad, rays starting %.2f voxels up: E/pi GPU %.5f, CPU %.5f; starting "
-                "%.0f voxels up, past the quad: %.5f; worst pixel off by %.4f\n",
-                count, start / count, sumGpu / count, sumCpu / count, kStart, sumSkipping / count, worst);
-    ASSERT_GT(count, 200);
-    EXPECT_NEAR(start / count, 0.45, 0.01);  // half a voxel to the quad's voxel, less the margin
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.01);
-    EXPECT_LT(worst, 0.5 / kRays);
-    // Under a black quad 4.5 voxels wide on each side, 0.85 voxels above the
-    // rays' start, only grazing rays get out: 3 % of the cosine-weighted
-    // hemisphere for a disc that wide. Started past it, they see the walls.
-    EXPECT_LT(sumGpu / count, 0.1);
-    EXPECT_GT(sumSkipping / count, 0.4);
-}
+// The floor of the open box of emissive walls under a black quad hanging
+// `quadUp` voxels over it (facing down, or up as the floor does), seen from
+// `cameraUp` voxels up between the two with a wide view; the gather's rays
+// start `offset` voxels off the floor. For the floor pixels under the quad's
+// middle: the GPU's E / pi against the same rays on the CPU (pixelRay, with
+// its start from pixelRayOffset), and against them marched by marchRay alone
+// (no sheet met) from max(start, passFrom) voxels up.
+struct UnderQuad {
+    int count = 0, sheets = 0;  // pixels, and those finding a sheet (sheetAhead)
+    double gpu = 0.0, cpu = 0.0, passing = 0.0, start = 0.0, worst = 0.0;  // means; worst |GPU - CPU|
+};
 
-// A sheet closer to the floor than the rays' start and facing the floor's way:
-// a black quad facing up hangs `gap` voxels over the floor of the open box of
-// emissive walls, in the floor's own voxel (0.4; the floor lies at the voxel's
-// middle) or in the next one up (0.7). The march would pass it as the floor's
-// own surface; the extents place it, so the rays that cross its plane within
-// a voxel of the pixel's column meet its back (sheetAhead, meetsSheet). The
-// camera looks down from between the two at the floor under the quad's middle.
-class GatherRaysSheet : public GatherRays, public ::testing::WithParamInterface<float> {};
-
-TEST_P(GatherRaysSheet, SheetInFrontOfTheStartIsMetFromBehind) {
-    const float gap = GetParam();
-    constexpr float kHalf = 0.71875f;
+UnderQuad floorUnderQuad(float quadUp, bool facingDown, float cameraUp, float offset, float passFrom) {
+    constexpr float kHalf = 0.71875f;  // the floor in the middle of its voxel layer
     const float voxel = 2.0f / float(kN), floorY = -kHalf;
     scene::Scene s;
     addInwardBox(s, addMaterial(s, glm::vec3(0.5f), glm::vec3(1.0f)), glm::vec3(0.0f), kHalf, true);
-    addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.0f, floorY + gap * voxel, 0.0f), 5.0f * voxel);
-    addTopDownCamera(s, floorY + 0.4f * gap * voxel, glm::radians(150.0f));
+    addQuad(s, addMaterial(s, glm::vec3(0.0f)), glm::vec3(0.0f, floorY + quadUp * voxel, 0.0f), 5.0f * voxel,
+            facingDown ? glm::angleAxis(glm::pi<float>(), glm::vec3(1, 0, 0)) : glm::quat(1, 0, 0, 0));
+    addTopDownCamera(s, floorY + cameraUp * voxel, glm::radians(150.0f));
     render::RenderSettings rs = unitBoxGridSettings(kN, 256);
     rs.width = rs.height = 48;
     rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
-    gatherEveryPixelByRays(rs, kOffset);
+    gatherEveryPixelByRays(rs, offset);
     render::Renderer r(context(), s, rs);
     r.renderFrame();
     const image::ImageRGBA32F img = r.readOutput();
@@ -247,8 +182,7 @@ TEST_P(GatherRaysSheet, SheetInFrontOfTheStartIsMetFromBehind) {
     const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, false);
     const glm::vec3 n(0.0f, 1.0f, 0.0f);
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
-    double sumGpu = 0.0, sumCpu = 0.0, sumPassing = 0.0, worst = 0.0;
-    int count = 0, found = 0;
+    UnderQuad u;
     for (uint32_t y = 0; y < rs.height; ++y)
         for (uint32_t x = 0; x < rs.width; ++x) {
             const glm::vec3 world = pixelOnPlane(s, rs, x, y, floorY);
@@ -257,38 +191,78 @@ TEST_P(GatherRaysSheet, SheetInFrontOfTheStartIsMetFromBehind) {
             const auto own = [&](glm::ivec3 c) {
                 return std::fabs(glm::dot(glm::vec3(c) + 0.5f - p, n)) < 1.5f && glm::dot(normalAt(c), n) > 0.8f;
             };
-            const float start = pixelRayOffset(radiance, normalAt, p, n, kOffset);
+            const float start = pixelRayOffset(radiance, normalAt, p, n, offset);
             int axis;
-            found += sheetAhead(radiance, normalAt, edges, p, n, start, axis) >= 0.0f;
+            u.sheets += sheetAhead(radiance, normalAt, edges, p, n, start, axis) >= 0.0f;
             const uint32_t seed = shader::gatherRaySeed(x, y, kRays);
             double cpu = 0.0, passing = 0.0;
             for (uint32_t i = 0; i < kRays; ++i) {
                 const glm::vec3 d = cosineRay(n, seed, i);
                 cpu += pixelRay(radiance, p, n, start, d, own, normalAt, edges).r;
-                passing += marchRay(radiance, p + n * start, d, own, normalAt, RayStart::Pixel, true, nullptr, &edges).r;
+                passing += marchRay(radiance, p + n * std::max(start, passFrom), d, own, normalAt, RayStart::Pixel,
+                                    true, nullptr, &edges)
+                               .r;
             }
-            cpu /= kRays;
-            passing /= kRays;
             const double gpu = img.at(x, y)[0];
-            sumGpu += gpu;
-            sumCpu += cpu;
-            sumPassing += passing;
-            worst = std::max(worst, std::fabs(gpu - cpu));
-            ++count;
+            u.gpu += gpu;
+            u.cpu += cpu / kRays;
+            u.passing += passing / kRays;
+            u.start += start;
+            u.worst = std::max(u.worst, std::fabs(gpu - cpu / kRays));
+            ++u.count;
         }
+    const double count = std::max(u.count, 1);
+    u.gpu /= count;
+    u.cpu /= count;
+    u.passing /= count;
+    u.start /= count;
+    return u;
+}
+
+// A surface closer to the floor than the rays' start: a black quad facing
+// down hangs 1.3 voxels over the floor, and the rays start 2 voxels off the
+// floor. They start just before the quad's voxel instead (pixelRayOffset), so
+// the floor under it sees the quad, not the walls beyond it.
+TEST_F(GatherRays, SurfaceCloserThanTheStartIsMetNotSkipped) {
+    constexpr float kStart = 2.0f;
+    const UnderQuad u = floorUnderQuad(1.3f, true, 0.9f, kStart, kStart);
+    std::printf("  %d floor pixels under the quad, rays starting %.2f voxels up: E/pi GPU %.5f, CPU %.5f; starting "
+                "%.0f voxels up, past the quad: %.5f; worst pixel off by %.4f\n",
+                u.count, u.start, u.gpu, u.cpu, kStart, u.passing, u.worst);
+    ASSERT_GT(u.count, 200);
+    EXPECT_NEAR(u.start, 0.45, 0.01);  // half a voxel to the quad's voxel, less the margin
+    EXPECT_NEAR(u.gpu / u.cpu, 1.0, 0.01);
+    EXPECT_LT(u.worst, 0.5 / kRays);
+    // Under a black quad 4.5 voxels wide on each side, 0.85 voxels above the
+    // rays' start, only grazing rays get out: 3 % of the cosine-weighted
+    // hemisphere for a disc that wide. Started past it, they see the walls.
+    EXPECT_LT(u.gpu, 0.1);
+    EXPECT_GT(u.passing, 0.4);
+}
+
+// A sheet closer to the floor than the rays' start and facing the floor's way:
+// the black quad faces up, `gap` voxels over the floor, in the floor's own
+// voxel (0.4) or in the next one up (0.7). The march would pass it as the
+// floor's own surface; the extents place it, so the rays that cross its plane
+// within a voxel of the pixel's column meet its back (sheetAhead, meetsSheet).
+class GatherRaysSheet : public GatherRays, public ::testing::WithParamInterface<float> {};
+
+TEST_P(GatherRaysSheet, SheetInFrontOfTheStartIsMetFromBehind) {
+    const float gap = GetParam();
+    const UnderQuad u = floorUnderQuad(gap, false, 0.4f * gap, kOffset, 0.0f);
     std::printf("  sheet %.1f voxels up: %d floor pixels under it, %d finding it: E/pi GPU %.5f, CPU %.5f; passing it "
                 "as the floor's own: %.5f; worst pixel off by %.4f\n",
-                gap, count, found, sumGpu / count, sumCpu / count, sumPassing / count, worst);
-    ASSERT_GT(count, 200);
-    EXPECT_EQ(found, count);
-    EXPECT_NEAR(sumGpu / sumCpu, 1.0, 0.01);
-    EXPECT_LT(worst, 0.5 / kRays);
+                gap, u.count, u.sheets, u.gpu, u.cpu, u.passing, u.worst);
+    ASSERT_GT(u.count, 200);
+    EXPECT_EQ(u.sheets, u.count);
+    EXPECT_NEAR(u.gpu / u.cpu, 1.0, 0.01);
+    EXPECT_LT(u.worst, 0.5 / kRays);
     // The rays that cross the sheet's plane more than a voxel beside the
     // pixel's column go on past it: those more than about 60 degrees off the
     // normal, a quarter of the cosine-weighted hemisphere at most, and less
     // where the sheet lies closer. Passing the sheet, every ray sees the walls.
-    EXPECT_LT(sumGpu / count, 0.25 * sumPassing / count);
-    EXPECT_GT(sumPassing / count, 0.4);
+    EXPECT_LT(u.gpu, 0.25 * u.passing);
+    EXPECT_GT(u.passing, 0.4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Gaps, GatherRaysSheet, ::testing::Values(0.4f, 0.7f),
