@@ -163,7 +163,7 @@ void addSample(ivec3 voxel, ivec3 q) {
     vec4 texel[2] = vec4[2](vec4(1.0), vec4(1.0));
     for (uint i = 0u; i < pc.dispatch.z; ++i) {
         int index = i == 0u ? m.textures.x : m.textures.y;
-        if (index != NO_TEXTURE) texel[i] = sampleTexture(index, uv);
+        if (index != NO_TEXTURE) texel[i] = sampleTexture(index, i == 0u ? m.textureSizes.xy : m.textureSizes.zw, uv);
     }
     vec4 base = m.baseColor * texel[0];  // sRGB views decode
     if (!materialCovers(m, base.a, vec2(q.xy) + 0.5)) return;

@@ -13,11 +13,15 @@
 // MAX_TEXTURES slots (8 sites took 44 s to compile), so the four taps share
 // one site in a loop of `materialTaps` (4, from a push constant the compiler
 // cannot see, so it does not unroll them), and callers call this once.
+// The texture's size comes with its material (GpuMaterial::textureSizes):
+// lavapipe answered textureSize on the array with another texture's size for
+// some invocations, so texels were fetched where that size put them (Sponza's
+// floor voxels 6 % too bright and unrelated to its pattern).
 float materialUvDensity = 0.0;
 uint materialTaps = 4u;
 
-vec4 sampleTexture(int index, vec2 uv) {
-    ivec2 size0 = textureSize(sampler2D(textures[index], textureSampler), 0);
+vec4 sampleTexture(int index, ivec2 size0, vec2 uv) {
+    size0 = max(size0, ivec2(1));
     int levels = int(floor(log2(float(max(size0.x, size0.y))))) + 1;  // SceneGpu builds full chains
     float lod = 0.5 * log2(max(materialUvDensity * float(size0.x) * float(size0.y), 1e-20));
     int level = int(clamp(round(lod), 0.0, float(levels - 1)));
@@ -43,7 +47,11 @@ vec4 sampleTexture(int index, vec2 uv) {
 
 vec4 materialBaseColor(GpuMaterial m, vec2 uv) {
     vec4 c = m.baseColor;
+#ifdef MATERIAL_EXPLICIT_LOD
+    if (m.textures.x != NO_TEXTURE) c *= sampleTexture(m.textures.x, m.textureSizes.xy, uv);  // sRGB views decode
+#else
     if (m.textures.x != NO_TEXTURE) c *= sampleTexture(m.textures.x, uv);  // sRGB views decode
+#endif
     return c;
 }
 

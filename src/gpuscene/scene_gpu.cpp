@@ -15,13 +15,19 @@ namespace {
 
 namespace sh = dvsgi::shader;
 
-sh::GpuMaterial toGpu(const scene::Material& m) {
+glm::ivec2 textureSize(const std::vector<scene::Texture>& textures, int index) {
+    if (index < 0 || size_t(index) >= textures.size()) return glm::ivec2(0);
+    return glm::ivec2(int(textures[size_t(index)].width), int(textures[size_t(index)].height));
+}
+
+sh::GpuMaterial toGpu(const scene::Material& m, const std::vector<scene::Texture>& textures) {
     sh::GpuMaterial g{};
     g.baseColor = m.baseColorFactor;
     g.emission = glm::vec4(m.emissiveFactor * m.emissiveStrength, 0.0f);
     g.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.alphaCutoff, m.normalScale);
     g.textures = glm::ivec4(m.baseColorTexture, m.emissiveTexture, m.metallicRoughnessTexture, m.normalTexture);
     g.flags = glm::uvec4(uint32_t(m.alphaMode), m.doubleSided ? 1u : 0u, 0u, 0u);
+    g.textureSizes = glm::ivec4(textureSize(textures, m.baseColorTexture), textureSize(textures, m.emissiveTexture));
     return g;
 }
 
@@ -79,10 +85,10 @@ SceneGpu::SceneGpu(const gpu::Context& ctx, const scene::Scene& scene, float max
 
     std::vector<sh::GpuMaterial> mats;
     for (const scene::Material& m : scene.materials) {
-        mats.push_back(toGpu(m));
+        mats.push_back(toGpu(m, scene.textures));
         emissiveTextures = emissiveTextures || m.emissiveTexture >= 0;
     }
-    if (mats.empty()) mats.push_back(toGpu(scene::Material{}));
+    if (mats.empty()) mats.push_back(toGpu(scene::Material{}, scene.textures));
     materials = gpu::createBuffer(ctx, mats.data(), mats.size() * sizeof(sh::GpuMaterial),
                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
 
