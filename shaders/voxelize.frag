@@ -17,6 +17,7 @@ layout(set = SET_TEXTURES, binding = BIND_TEXTURES) uniform texture2D textures[M
 layout(set = SET_TEXTURES, binding = BIND_TEXTURE_SAMPLER) uniform sampler textureSampler;
 layout(push_constant) uniform Push { VoxelizePush pc; };
 
+#define MATERIAL_EXPLICIT_LOD
 #include "lib/material.glsl"
 #include "lib/voxel_index.glsl"
 #include "lib/voxel_accumulate.glsl"
@@ -76,10 +77,16 @@ void main() {
     if (!columnDepthRange(vec2(column), depth)) discard;
 
     GpuMaterial m = materials[inMaterial];
+    // Textures are fetched by hand as the compute voxelizer does (lib/material.glsl): on lavapipe,
+    // texture() on the dynamically indexed array sampled a material's texture wrong, white over a
+    // half-black one. The level comes from the texture area per voxel area of the projected
+    // triangle (the rasterizer's pixels are voxel columns).
+    vec2 du = dFdx(inUV), dv = dFdy(inUV);
+    materialUvDensity = abs(du.x * dv.y - du.y * dv.x);
     vec4 base = materialBaseColor(m, inUV);
     if (!materialCovers(m, base.a, pc2)) discard;
     vec3 emission = m.emission.rgb;
-    if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, inUV).rgb;
+    if (m.textures.y != NO_TEXTURE) emission *= sampleTexture(m.textures.y, m.textureSizes.zw, inUV).rgb;
     vec3 n = normalize(inNormal);
 
     // Every voxel layer that the triangle's part inside this pixel column

@@ -1,14 +1,17 @@
 // Material sampling shared by every pass that rasterizes the scene. Needs
 // `materials[]`, `textures[]` and `textureSampler` declared by the including shader;
-// compute shaders define MATERIAL_EXPLICIT_LOD first.
+// the voxelizers define MATERIAL_EXPLICIT_LOD first.
 
 #ifdef MATERIAL_EXPLICIT_LOD
-// Compute shaders have no derivatives: the caller sets how much texture area
-// one unit of surface area covers (uv^2 per voxel^2 for the compute
-// voxelizer), and the level is the one where a texel matches that unit.
+// The voxelizers sample by hand: the caller sets how much texture area one
+// unit of surface area covers (uv^2 per voxel^2; the compute voxelizer has no
+// derivatives, the geometry-shader one takes them from its voxel-sized
+// pixels), and the level is the one where a texel matches that unit.
 // Filtered by hand with texelFetch (bilinear, nearest level, repeat as the
 // scene's sampler): lavapipe (Mesa 22.3) crashes compiling textureLod or
-// textureGrad on a dynamically indexed texture array in a compute shader.
+// textureGrad on a dynamically indexed texture array in a compute shader, and
+// its texture() on that array in the geometry-shader voxelizer's fragment
+// shader sampled a material's texture wrong (white over a half-black one).
 // It also compiles every fetch site of such an array as a switch over all
 // MAX_TEXTURES slots (8 sites took 44 s to compile), so the four taps share
 // one site in a loop of `materialTaps` (4, from a push constant the compiler
