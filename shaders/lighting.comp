@@ -82,6 +82,8 @@ float coneVisibility(vec3 P, vec3 N, vec3 L, float dist) {
 // two voxels short of the emitter's plane, so the emitter's own voxel layer
 // (and a ceiling beside it in the same layer) does not shadow it, as the
 // voxels' own rays to a patch stop (inject.comp).
+// The pixel's rays' start and sheet, found once (rayStartOffset).
+PixelRays pixelRays;
 // `offset`: where the ray starts off the surface, in voxels (rayStartOffset).
 float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emitterNormal, float offset) {
     float s = grid.originSize.w;
@@ -90,13 +92,15 @@ float areaVisibility(vec3 P, vec3 N, vec3 L, float dist, float radius, vec3 emit
     float reach = length(toEmitter);
     vec3 d = toEmitter / reach;
     reach -= 2.0 / max(abs(dot(emitterNormal, d)), 0.2);
-    return reach <= 0.0 || pixelRayClear(p, N, d, offset, reach) ? 1.0 : 0.0;
+    return reach <= 0.0 || pixelRayClear(p, N, d, pixelRays, reach) ? 1.0 : 0.0;
 }
-// The pixel's rays start as its gather's do (lib/voxel_rays.glsl, pixelRayOffset):
-// before a surface that faces back within the offset.
+// The pixel's rays start as its gather's do (lib/voxel_rays.glsl, pixelRaysAt):
+// before a surface that faces back within the offset, and they meet a sheet
+// nearer than that.
 float rayStartOffset(vec3 P, vec3 N) {
     float s = grid.originSize.w;
-    return pixelRayOffset((P - grid.originSize.xyz) / s, N, pc.shadow.z, int(grid.dims.x));
+    pixelRays = pixelRaysAt((P - grid.originSize.xyz) / s, N, pc.shadow.z, int(grid.dims.x));
+    return pixelRays.start;
 }
 #else
 float rayStartOffset(vec3 P, vec3 N) { return 0.0; }

@@ -70,6 +70,13 @@ bool columnDepthRange(vec2 column, out vec2 range) {
 }
 
 void main() {
+    // Textures are fetched by hand as the compute voxelizer does (lib/material.glsl): on lavapipe,
+    // texture() on the dynamically indexed array sampled a material's texture wrong, white over a
+    // half-black one. The level comes from the texture area per voxel area of the projected
+    // triangle (the rasterizer's pixels are voxel columns), taken before any fragment of the quad
+    // is discarded.
+    vec2 du = dFdx(inUV), dv = dFdy(inUV);
+    materialUvDensity = abs(du.x * dv.y - du.y * dv.x);
     vec2 pc2 = gl_FragCoord.xy;
     if (any(lessThan(pc2, inAabb.xy)) || any(greaterThan(pc2, inAabb.zw))) discard;
     ivec2 column = ivec2(pc2);
@@ -77,12 +84,6 @@ void main() {
     if (!columnDepthRange(vec2(column), depth)) discard;
 
     GpuMaterial m = materials[inMaterial];
-    // Textures are fetched by hand as the compute voxelizer does (lib/material.glsl): on lavapipe,
-    // texture() on the dynamically indexed array sampled a material's texture wrong, white over a
-    // half-black one. The level comes from the texture area per voxel area of the projected
-    // triangle (the rasterizer's pixels are voxel columns).
-    vec2 du = dFdx(inUV), dv = dFdy(inUV);
-    materialUvDensity = abs(du.x * dv.y - du.y * dv.x);
     vec4 base = materialBaseColor(m, inUV);
     if (!materialCovers(m, base.a, pc2)) discard;
     vec3 emission = m.emission.rgb;

@@ -459,19 +459,36 @@ bool meetsSheet(vec3 p, vec3 n, vec3 d, int a, float plane, uint cells, out int 
     return cell >= 0 && ((cells >> uint(cell)) & 1u) != 0u;
 }
 
-// Whether a ray from `offset` voxels off surface point p (voxel units, normal
-// n) along unit d meets no occupied voxel within `reach` voxels of its
-// origin: a pixel's shadow ray, starting and passing surfaces as the
+// Where a pixel's rays start (pixelRayOffset) and the sheet nearer than that
+// (sheetAhead, sheetCells; cells 0 where there is none): the same for all of
+// a pixel's rays, its gather's and its shadow rays to emitter patches.
+struct PixelRays {
+    float start;
+    float sheet;
+    int axis;
+    uint cells;
+};
+
+PixelRays pixelRaysAt(vec3 p, vec3 n, float offset, int N) {
+    PixelRays r;
+    r.start = pixelRayOffset(p, n, offset, N);
+    r.sheet = sheetAhead(p, n, r.start, N, r.axis);
+    r.cells = r.sheet >= 0.0 ? sheetCells(p, n, r.axis, r.sheet, N) : 0u;
+    return r;
+}
+
+// Whether a ray from surface point p (voxel units, normal n; its start and
+// sheet in `rays`) along unit d meets no occupied voxel within `reach` voxels
+// of its origin: a pixel's shadow ray, starting and passing surfaces as the
 // pixel's gather rays do.
-bool pixelRayClear(vec3 p, vec3 n, vec3 d, float offset, float reach) {
+bool pixelRayClear(vec3 p, vec3 n, vec3 d, PixelRays rays, float reach) {
     int N = int(grid.dims.x);
-    int axis, cell;
+    int cell;
     float tSheet;
-    float sheet = sheetAhead(p, n, offset, N, axis);
-    if (sheet >= 0.0 && meetsSheet(p, n, d, axis, sheet, sheetCells(p, n, axis, sheet, N), cell, tSheet) &&
-        tSheet < reach + offset)
+    if (rays.cells != 0u && meetsSheet(p, n, d, rays.axis, rays.sheet, rays.cells, cell, tSheet) &&
+        tSheet < reach + rays.start)
         return false;
-    vec3 origin = p + n * offset, inv = rayInverse(d), seen, besideAt, besideN;
+    vec3 origin = p + n * rays.start, inv = rayInverse(d), seen, besideAt, besideN;
     uvec4 offsets = rayOccupancyOffsets();
     float t = pixelRayStart(origin, p, n, d, inv, N, besideAt, besideN);
     for (int k = 0; k < 4 * N && t < reach; ++k) {
@@ -499,23 +516,21 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
     vec3 tx, b;
     rayDisk(n, tx, b);
     vec2 shift = rayShift(seed);
-    float start = pixelRayOffset(p, n, offset, N);
-    vec3 origin = p + n * start;
+    PixelRays rays = pixelRaysAt(p, n, offset, N);
+    vec3 origin = p + n * rays.start;
     uvec4 offsets = rayOccupancyOffsets();
     vec3 sum = vec3(0.0), d = n, inv = vec3(1.0), besideAt = vec3(0.0), besideN = vec3(0.0);
     occlusion = 0.0;
     // The rays that meet a sheet nearer than the start are summed apart: the
     // march's loop below only skips them. Meeting them there cost lavapipe a
     // third more time for the whole gather, with or without a sheet anywhere.
-    int sheetAxis, cell;
+    int cell;
     float tSheet;
-    float sheet = sheetAhead(p, n, start, N, sheetAxis);
-    uint cells = sheet >= 0.0 ? sheetCells(p, n, sheetAxis, sheet, N) : 0u;
-    if (cells != 0u)
+    if (rays.cells != 0u)
         for (uint i = 0u; i < count; ++i) {
             vec3 di = cosineRay(shift, i, tx, b, n);
-            if (!meetsSheet(p, n, di, sheetAxis, sheet, cells, cell, tSheet)) continue;
-            sum += sheetSeen(p, n, di, sheetAxis, sheet, cell, backsDark);
+            if (!meetsSheet(p, n, di, rays.axis, rays.sheet, rays.cells, cell, tSheet)) continue;
+            sum += sheetSeen(p, n, di, rays.axis, rays.sheet, cell, backsDark);
             occlusion += 1.0 / (1.0 + aoLambda * tSheet);
         }
     float t = 0.0;
@@ -529,7 +544,8 @@ vec3 pixelRaysCosine(vec3 p, vec3 n, float offset, uint count, uint seed, float 
             t = pixelRayStart(origin, p, n, d, inv, N, besideAt, besideN);
             // A ray that met the sheet (summed above) ends at its first step,
             // outside the grid (a skip here cost as much as meeting it here).
-            if (cells != 0u && meetsSheet(p, n, d, sheetAxis, sheet, cells, cell, tSheet)) t = float(4 * N);
+            if (rays.cells != 0u && meetsSheet(p, n, d, rays.axis, rays.sheet, rays.cells, cell, tSheet))
+                t = float(4 * N);
         }
         vec3 seen;
         // Step 1 on: the first voxel met is a hit with its light (or passed in front of).

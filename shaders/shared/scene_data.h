@@ -30,9 +30,9 @@ struct GpuMaterial {
     ivec4 textures;   // base colour, emissive, metallic-roughness, normal; NO_TEXTURE = none
     uvec4 flags;      // x alpha mode, y doubleSided
     // x, y: the base colour texture's width and height, z, w: the emissive
-    // texture's (texels; 0 without one). The compute voxelizer reads them here:
-    // lavapipe answered textureSize on its dynamically indexed texture array
-    // with another texture's size for some invocations (lib/material.glsl).
+    // texture's (texels; 0 without one). The voxelizers read them here: lavapipe
+    // answered textureSize on the dynamically indexed texture array with
+    // another texture's size for some invocations (lib/material.glsl).
     ivec4 textureSizes;
 };
 DVSGI_CHECK_SIZE(GpuMaterial, 96);

@@ -44,6 +44,25 @@ void gatherEveryPixelByRays(render::RenderSettings& rs, float offset) {
     rs.gather.spin = false;
 }
 
+// One frame rendered with `rs`, and what the CPU needs to march the same rays:
+// the output image, the radiance volume, the attribute sums (the rays'
+// normals) and the extents and side light (EdgeModel, with rs's
+// --edge-voxels setting).
+struct GatherFrame {
+    image::ImageRGBA32F img;
+    Rgba16Volume radiance;
+    VoxelReadback attributes;
+    EdgeModel edges;
+};
+
+GatherFrame renderGather(const scene::Scene& s, const render::RenderSettings& rs) {
+    render::Renderer r(context(), s, rs);
+    r.renderFrame();
+    GatherFrame f{r.readOutput(), readRgba16(r.volumes()->radiance), readVoxels(*r.volumes()), {}};
+    f.edges = edgeModel(context(), *r.volumes(), f.attributes, rs.voxelLight.edgeFaces);
+    return f;
+}
+
 // The rays of one block of GATHER_RAY_BLOCK^2 trace pixels (gatherRaySeed),
 // as points of the unit square before they are lifted onto the hemisphere:
 // together they are one R2 sequence, so every cell of a grid holding four
@@ -91,12 +110,7 @@ TEST_P(GatherRaysBox, MatchTheSameRaysMarchedOnTheCpu) {
     rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
     gatherEveryPixelByRays(rs, kOffset);  // the walls' emission is all the voxels hold
     rs.voxelLight.edgeFaces = faces;
-    render::Renderer r(context(), s, rs);
-    r.renderFrame();
-    const image::ImageRGBA32F img = r.readOutput();
-    const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
-    const VoxelReadback attributes = readVoxels(*r.volumes());
-    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, faces);
+    const auto [img, radiance, attributes, edges] = renderGather(s, rs);
     const float voxel = 2.0f / float(kN);
     const glm::vec3 n(0.0f, 1.0f, 0.0f);
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
@@ -174,12 +188,7 @@ UnderQuad floorUnderQuad(float quadUp, bool facingDown, float cameraUp, float of
     rs.width = rs.height = 48;
     rs.outputTerm = shader::TERM_IRRADIANCE;  // E / pi
     gatherEveryPixelByRays(rs, offset);
-    render::Renderer r(context(), s, rs);
-    r.renderFrame();
-    const image::ImageRGBA32F img = r.readOutput();
-    const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
-    const VoxelReadback attributes = readVoxels(*r.volumes());
-    const EdgeModel edges = edgeModel(context(), *r.volumes(), attributes, false);
+    const auto [img, radiance, attributes, edges] = renderGather(s, rs);
     const glm::vec3 n(0.0f, 1.0f, 0.0f);
     const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
     UnderQuad u;
@@ -296,11 +305,7 @@ TEST_F(GatherRays, AmbientOcclusionMatchesTheSameRaysOnTheCpu) {
         rs.outputTerm = shader::TERM_AO;  // 1 - occlusion
         rs.gather.aoLambda = lambda;
         gatherEveryPixelByRays(rs, kOffset);
-        render::Renderer r(context(), s, rs);
-        r.renderFrame();
-        const image::ImageRGBA32F img = r.readOutput();
-        const Rgba16Volume radiance = readRgba16(r.volumes()->radiance);
-        const VoxelReadback attributes = readVoxels(*r.volumes());
+        const auto [img, radiance, attributes, edges] = renderGather(s, rs);
         const glm::vec3 up(0.0f, 1.0f, 0.0f);
         const auto normalAt = [&](glm::ivec3 c) { return rayNormalOf(attributes, c); };
         double sumGpu = 0.0, sumCpu = 0.0, worst = 0.0;
