@@ -135,11 +135,6 @@ void main() {
     }
 }
 #elif defined(DVSGI_RAY_TRACE)
-// Rays start a voxel off the voxel's centre (docs/quality.md: from two off,
-// as the cones start, they missed what stands beside the surface).
-#ifndef RAY_OFFSET
-#define RAY_OFFSET 1.0
-#endif
 void main() {
     uint entry = listInvocation();
     if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
@@ -152,7 +147,7 @@ void main() {
     // light, with no noise from frame to frame.
     uint seed = raySeed(v);
     vec3 other;
-    vec3 reflected = albedo * voxelRaysCosine(v, n, RAY_OFFSET, pc.flags.w, seed,
+    vec3 reflected = albedo * voxelRaysCosine(v, n, pc.flags.w, seed,
                                               axis >= 0 ? max(pc.flags.w / 4u, 4u) : 0u, rayHash(seed), pc.flags.z != 0u,
                                               other);
     other *= albedo;

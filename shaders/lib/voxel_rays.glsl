@@ -57,12 +57,11 @@ vec3 facesSeen(uint slot, vec4 r, vec3 nc, vec3 d) {
 // Whether occupied voxel c (normal nc) belongs to the surface a ray leaving voxel
 // `self` (centre, normal n) starts on: within a voxel and a half of its
 // plane and facing the same way. A surface voxelizes into one or two layers;
-// rays start one voxel off, which is the second layer's when there is one.
+// a voxel's rays start just past its face and a pixel's a voxel off its
+// surface, either of which can be in the second layer when there is one.
 bool onOwnSurface(ivec3 c, vec3 nc, vec3 self, vec3 n) {
     return abs(dot(vec3(c) + 0.5 - self, n)) < 1.5 && dot(nc, n) > 0.8;
 }
-
-const float RAY_PLANE_AXIS_COS = 0.98;
 
 // Whether a ray from p along d (1/d = inv), at p + d t inside occupied voxel
 // c (normal nc), leaves c before it reaches the plane through c's centre across c's normal:
@@ -220,24 +219,39 @@ vec3 cosineRay(vec2 shift, uint i, vec3 tx, vec3 b, vec3 n) {
 // 1 / d, with axes too near 0 held at 1e7.
 vec3 rayInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(1e-7))); }
 
+// Where the rays of voxel `self` (centre) about n start: voxelRayOrigin, or,
+// where that lies in another surface's voxel, a whole voxel along n. An edge
+// voxel whose one wall covers more of it than the other (n = (0.8, 0.6)) has
+// the other wall's voxel just past its largest axis's face, and its rays met
+// that at no distance: no light, and a closed box lost 1 % of its light.
+vec3 voxelRayStart(vec3 self, vec3 n, int N) {
+    vec3 origin = voxelRayOrigin(self, n);
+    ivec3 c = ivec3(floor(origin));
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N))) || RAY_RADIANCE(c).a <= 0.0 ||
+        onOwnSurface(c, slotRayNormal(voxelSlotAt(c)), self, n))
+        return origin;
+    return self + n;
+}
+
 // The mean radiance over `count` cosine-distributed rays about n from voxel
 // v, i.e. E / pi, and in `back` the same over `backCount` rays about -n
 // (seed `backSeed`; a two-sided voxel's other side, else 0 rays). The
 // directions follow the R2 sequence (well spread over the disk for any
 // count), shifted by the seed per voxel so that neighbours do not share their
-// gaps. The rays start `offset` voxels off v's centre along their side's
-// normal. One loop walks all of them, a ray starting as soon as the one
+// gaps. The rays start just past v's face along their side's normal
+// (voxelRayStart). One loop walks all of them, a ray starting as soon as the one
 // before ends: invocations run in lock-step (SIMD lanes on a CPU, a warp on a
 // GPU), and with a loop per ray every lane waited for its group's longest
 // ray, once per ray, where now it waits once for the longest walk over all
 // its rays.
-vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint backCount, uint backSeed,
+vec3 voxelRaysCosine(ivec3 v, vec3 n, uint count, uint seed, uint backCount, uint backSeed,
                      bool backsDark, out vec3 back) {
     int N = int(grid.dims.x);
     vec3 self = vec3(v) + 0.5;
     vec3 tx, b;
     rayDisk(n, tx, b);
     vec2 frontShift = rayShift(seed), backShift = rayShift(backSeed);
+    vec3 frontStart = voxelRayStart(self, n, N), backStart = backCount > 0u ? voxelRayStart(self, -n, N) : self;
     vec3 front = vec3(0.0), d = n, inv = vec3(1.0), side = n, origin = self;
     back = vec3(0.0);
     float t = 0.0;
@@ -250,7 +264,7 @@ vec3 voxelRaysCosine(ivec3 v, vec3 n, float offset, uint count, uint seed, uint 
             bool isBack = ray >= count;
             float sign = isBack ? -1.0 : 1.0;
             side = n * sign;
-            origin = self + side * offset;
+            origin = isBack ? backStart : frontStart;
             d = cosineRay(isBack ? backShift : frontShift, isBack ? ray - count : ray, tx * sign, b, side);
             inv = rayInverse(d);
             t = 0.0;

@@ -82,6 +82,28 @@ DVSGI_FUNCTION uint rayOccupancyOffset(uint n, uint level) {
     return words;
 }
 
+// A voxel whose normal lies within about 11 degrees of an axis (this cosine)
+// holds a floor or a wall: a plane across that axis, which rays reach at the
+// plane through the voxel's centre (lib/voxel_rays.glsl). The mean normal of
+// an edge, a corner or a tilted surface's staircase is no plane its voxel holds.
+DVSGI_CONST(float, RAY_PLANE_AXIS_COS, 0.98);
+// Where a voxel's rays (bounce.comp) start, from its centre along its normal
+// n: VOXEL_RAY_START voxels along n's largest axis, just past the voxel's
+// face there (an edge's or a corner's diagonal normal: past its faces along
+// both or all three axes), unless another surface's voxel lies there
+// (voxelRayStart in lib/voxel_rays.glsl). From a whole voxel along n, a
+// floor's voxel gathered its light up to a voxel and a half above the floor,
+// nearer a lit ceiling, and the Cornell box's second bounce came out 1 %
+// bright. Exactly half a voxel put a point on the face itself, which floor()
+// places in the voxel when n points down an axis: a thin wall's rays on that
+// side started inside their own voxel, which they do not pass as their own
+// surface, and met nothing (docs/quality.md, "Where a voxel's rays start").
+DVSGI_CONST(float, VOXEL_RAY_START, 0.51);
+DVSGI_FUNCTION vec3 voxelRayOrigin(vec3 centre, vec3 n) {
+    vec3 m = abs(n);
+    float largest = m.x > m.y ? (m.x > m.z ? m.x : m.z) : (m.y > m.z ? m.y : m.z);
+    return centre + n * (VOXEL_RAY_START / largest);
+}
 // The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU
 // march: the R2 sequence over the unit square, shifted per voxel by a hash.
 // A pixel's rays start this far (voxels) before a surface that faces back

@@ -45,11 +45,11 @@ glm::vec3 wallNormal(glm::ivec3 c) {
 }
 
 // voxelRaysCosine's mean over its rays: R2 directions shifted per voxel,
-// cosine-distributed about n, from one voxel off the voxel's centre.
+// cosine-distributed about n, from just past the voxel's face.
 float cpuRays(const Rgba16Volume& radiance, const VoxelReadback& attributes, glm::ivec3 v, glm::vec3 n,
               const EdgeModel* edges = nullptr) {
     const uint32_t seed = shader::raySeed(v);
-    const glm::vec3 origin = glm::vec3(v) + 0.5f + n;
+    const glm::vec3 origin = shader::voxelRayOrigin(glm::vec3(v) + 0.5f, n);
     // The voxel's own surface: its wall's layer, by the walls' own normals.
     const auto own = [&](glm::ivec3 c) {
         return std::fabs(glm::dot(glm::vec3(c - v), n)) < 1.5f && glm::dot(wallNormal(c), n) > 0.8f;
