@@ -223,9 +223,14 @@ vec3 rayInverse(vec3 d) { return 1.0 / mix(d, vec3(1e-7), lessThan(abs(d), vec3(
 // where that lies in another surface's voxel, a whole voxel along n. An edge
 // voxel whose one wall covers more of it than the other (n = (0.8, 0.6)) has
 // the other wall's voxel just past its largest axis's face, and its rays met
-// that at no distance: no light, and a closed box lost 1 % of its light.
+// that at no distance: no light, and a closed box lost 1 % of its light. A
+// floor's or a wall's voxel (n within about 11 degrees of an axis) has both
+// points in the same voxel, so it is not looked up: that lookup for every
+// voxel made Sponza's bounce 8 % slower on lavapipe.
 vec3 voxelRayStart(vec3 self, vec3 n, int N) {
     vec3 origin = voxelRayOrigin(self, n);
+    vec3 m = abs(n);
+    if (max(m.x, max(m.y, m.z)) >= RAY_PLANE_AXIS_COS) return origin;
     ivec3 c = ivec3(floor(origin));
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(N))) || RAY_RADIANCE(c).a <= 0.0 ||
         onOwnSurface(c, slotRayNormal(voxelSlotAt(c)), self, n))
