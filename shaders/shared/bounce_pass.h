@@ -87,6 +87,8 @@ DVSGI_FUNCTION uint rayOccupancyOffset(uint n, uint level) {
 // plane through the voxel's centre (lib/voxel_rays.glsl). The mean normal of
 // an edge, a corner or a tilted surface's staircase is no plane its voxel holds.
 DVSGI_CONST(float, RAY_PLANE_AXIS_COS, 0.98);
+DVSGI_FUNCTION float largestComponent(vec3 m) { return m.x > m.y ? (m.x > m.z ? m.x : m.z) : (m.y > m.z ? m.y : m.z); }
+DVSGI_FUNCTION bool alongAnAxis(vec3 n) { return largestComponent(abs(n)) >= RAY_PLANE_AXIS_COS; }
 // Where a voxel's rays (bounce.comp) start, from its centre along its normal
 // n: VOXEL_RAY_START voxels along n's largest axis, just past the voxel's
 // face there (an edge's or a corner's diagonal normal: past its faces along
@@ -100,9 +102,7 @@ DVSGI_CONST(float, RAY_PLANE_AXIS_COS, 0.98);
 // surface, and met nothing (docs/quality.md, "Where a voxel's rays start").
 DVSGI_CONST(float, VOXEL_RAY_START, 0.51);
 DVSGI_FUNCTION vec3 voxelRayOrigin(vec3 centre, vec3 n) {
-    vec3 m = abs(n);
-    float largest = m.x > m.y ? (m.x > m.z ? m.x : m.z) : (m.y > m.z ? m.y : m.z);
-    return centre + n * (VOXEL_RAY_START / largest);
+    return centre + n * (VOXEL_RAY_START / largestComponent(abs(n)));
 }
 // The rays' directions (lib/voxel_rays.glsl), shared with the tests' CPU
 // march: the R2 sequence over the unit square, shifted per voxel by a hash.

@@ -36,8 +36,7 @@ inline glm::vec3 rayNormalOf(const VoxelReadback& attributes, glm::ivec3 c) {
 // passesInFront: the ray p + d t, inside voxel c, leaves it (at tExit) before
 // the plane through c's centre across c's normal nc.
 inline bool rayPassesInFront(glm::ivec3 c, glm::vec3 nc, glm::vec3 p, glm::vec3 d, float t, float tExit) {
-    const glm::vec3 m = glm::abs(nc);
-    if (std::max({m.x, m.y, m.z}) < shader::RAY_PLANE_AXIS_COS) return false;  // edges, corners, tilted surfaces: solid
+    if (!shader::alongAnAxis(nc)) return false;  // edges, corners, tilted surfaces: solid
     const float ahead = glm::dot(glm::vec3(c) + 0.5f - (p + d * t), nc), along = glm::dot(d, nc);
     if (ahead * along <= 0.0f) return false;
     return t + ahead / along > tExit;
@@ -120,8 +119,8 @@ inline bool rayPassesBeside(glm::ivec3 c, glm::vec3 nc, uint32_t bits, glm::vec3
         lo[k] = float(c[k]) + float(first) / 8.0f;
         hi[k] = float(c[k]) + float(last + 1) / 8.0f;
     }
-    const glm::vec3 m = glm::abs(nc);
-    if (std::max({m.x, m.y, m.z}) >= shader::RAY_PLANE_AXIS_COS) {
+    if (shader::alongAnAxis(nc)) {
+        const glm::vec3 m = glm::abs(nc);
         const int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
         const float tp = std::fabs(d[a]) > 1e-7f ? (float(c[a]) + 0.5f - p[a]) / d[a] : -1.0f;
         const glm::vec3 q = p + d * (tp >= t && tp <= tExit ? tp : t);
