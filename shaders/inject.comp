@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
+#include "shared/shadow_pass.h"
 #include "shared/inject_pass.h"
 #include "shared/voxel_data.h"
 #include "shared/voxel_list_pass.h"
@@ -24,7 +25,8 @@ layout(set = 0, binding = BIND_INJECT_GRID) uniform Grid { VoxelGrid grid; };
 layout(set = 0, binding = BIND_INJECT_ACCUM, r32f) uniform readonly image3D accum;
 layout(set = 0, binding = BIND_INJECT_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = BIND_INJECT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
-layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
+layout(set = 0, binding = BIND_INJECT_SHADOW_MAP) uniform sampler2DArray shadowMap;
+layout(set = 0, binding = BIND_INJECT_SHADOW_GRADIENT) uniform sampler2DArray shadowGradient;
 layout(set = 0, binding = BIND_INJECT_DIRECT, rgba16f) uniform writeonly image3D outDirect;
 layout(set = 0, binding = BIND_INJECT_OUT_RADIANCE, rgba16f) uniform writeonly image3D outRadiance;
 layout(set = 0, binding = BIND_INJECT_SIDES, rgba32ui) uniform uimage3D sides;

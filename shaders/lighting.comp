@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "shared/scene_data.h"
+#include "shared/shadow_pass.h"
 #include "shared/lighting_pass.h"
 #include "shared/voxel_data.h"
 
@@ -21,7 +22,8 @@ layout(set = 0, binding = BIND_LIGHT_GBUF_EMISSION) uniform sampler2D gEmission;
 layout(set = 0, binding = BIND_LIGHT_DEPTH) uniform sampler2D gDepth;
 layout(set = 0, binding = BIND_LIGHT_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = BIND_LIGHT_SHADOW_VIEWS, std430) readonly buffer Views { GpuShadowView shadowViews[]; };
-layout(set = 0, binding = BIND_LIGHT_SHADOW_MAP) uniform sampler2DArrayShadow shadowMap;
+layout(set = 0, binding = BIND_LIGHT_SHADOW_MAP) uniform sampler2DArray shadowMap;
+layout(set = 0, binding = BIND_LIGHT_SHADOW_GRADIENT) uniform sampler2DArray shadowGradient;
 layout(set = 0, binding = BIND_LIGHT_OUT_DIRECT, rgba32f) uniform writeonly image2D outDirect;
 #ifdef DVSGI_SHADOW_MAPS_ONLY
 // The cone-free variant declares no voxel volume (the layout keeps the bindings).

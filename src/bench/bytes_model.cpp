@@ -24,6 +24,7 @@ constexpr uint64_t kListEntryBytes = 4;                       // occupied-voxel 
 constexpr uint64_t kBounceAttributeBytes = 10 * 4;
 constexpr uint64_t kGBufferColorBytes = 8;  // base, normal, emission: RGBA16F each
 constexpr uint64_t kDepthBytes = 4;         // D32
+constexpr uint64_t kShadowGradientBytes = 4;  // RG16F, beside each shadow-map texel
 constexpr uint64_t kDirectBytes = 16;       // RGBA32F direct radiance
 constexpr uint64_t kVisibilityBytes = 2;    // R16F light visibility
 constexpr uint64_t kTermBytes = 8;          // RGBA16F indirect diffuse, specular
@@ -92,9 +93,9 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
         out.push_back({"voxelize dynamic", in.dynamicGeometryBytes + dynamic * kIndexBytes,
                        dynamic * (kAttributeBytes + kExtentBytes + kIndexBytes + kListEntryBytes)});
     }
-    // Every view rasterizes all geometry and writes its whole layer.
+    // Every view rasterizes all geometry and writes its whole layer: depth and the casters' gradients.
     out.push_back({"shadow maps", geometry * in.shadowViews,
-                   uint64_t(in.shadowMapSize) * in.shadowMapSize * kDepthBytes * in.shadowViews});
+                   uint64_t(in.shadowMapSize) * in.shadowMapSize * (kDepthBytes + kShadowGradientBytes) * in.shadowViews});
     if (in.voxels > 0) {
         // Direct light into the slot and the radiance volume.
         out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),

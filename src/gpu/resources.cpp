@@ -281,8 +281,6 @@ Sampler::Sampler(const Context& ctx, const SamplerDesc& d) : device_(ctx.device)
     sci.addressModeU = sci.addressModeV = sci.addressModeW = d.address;
     sci.borderColor = d.transparentBorder ? VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK : VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
     sci.maxLod = VK_LOD_CLAMP_NONE;
-    sci.compareEnable = d.compare;
-    sci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     // Anisotropy is a quality hint: without the feature the sampler is plain trilinear.
     sci.anisotropyEnable = d.maxAnisotropy > 1.0f && ctx.features.samplerAnisotropy;
     sci.maxAnisotropy = sci.anisotropyEnable ? std::min(d.maxAnisotropy, ctx.properties.limits.maxSamplerAnisotropy) : 1.0f;

@@ -105,7 +105,6 @@ struct SamplerDesc {
     VkFilter filter = VK_FILTER_LINEAR;
     VkSamplerMipmapMode mipmap = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     VkSamplerAddressMode address = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    bool compare = false;  // depth comparison (shadow maps)
     bool transparentBorder = false;  // CLAMP_TO_BORDER reads (0,0,0,0) instead of opaque white
     float maxAnisotropy = 1.0f;
 };

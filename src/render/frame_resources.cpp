@@ -55,6 +55,9 @@ FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
                               VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                           "shadow map array",
                           std::max(s.shadowViews, 2u));
+    t.shadowGradient = image2D(ctx, VK_FORMAT_R16G16_SFLOAT, s.shadowMapSize, s.shadowMapSize,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                            "shadow gradient array", std::max(s.shadowViews, 2u));
     t.direct = image2D(ctx, VK_FORMAT_R32G32B32A32_SFLOAT, iw, ih, storage, "direct radiance");
     t.visibility = image2D(ctx, VK_FORMAT_R16_SFLOAT, iw, ih, storage, "light visibility");
     t.diffuse = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, iw, ih, storage, "indirect diffuse");
@@ -87,11 +90,6 @@ Samplers createSamplers(const gpu::Context& ctx) {
     point.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     point.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     s.point = gpu::Sampler(ctx, point);
-    gpu::SamplerDesc shadow;
-    shadow.compare = true;
-    shadow.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    shadow.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    s.shadow = gpu::Sampler(ctx, shadow);
     // Outside the grid is empty: a transparent border, so coarse cells on the
     // grid's edge fade into nothing instead of repeating themselves beyond it.
     gpu::SamplerDesc volume;

@@ -45,6 +45,7 @@ struct TemporalHistory {
 struct FrameTargets {
     GBuffer gbuffer;               // internal size
     gpu::Image shadowMap;          // D32 array, one layer per shadow view (at least 2: always an array)
+    gpu::Image shadowGradient;     // RG16F array beside it: each texel's caster's depth gradient (shadow.frag)
     gpu::Image direct;             // RGBA32F internal size: direct light + emission
     gpu::Image visibility;         // R16F internal size: mean visibility of the lights facing each pixel
     gpu::Image diffuse, specular;  // RGBA16F internal size: cone-traced indirect diffuse (+ AO in a), specular
@@ -63,8 +64,7 @@ GBuffer createGBuffer(const gpu::Context& ctx, uint32_t width, uint32_t height, 
 
 // Samplers the passes share (immutable, so owned next to the frame).
 struct Samplers {
-    gpu::Sampler point;   // G-buffer texel fetches
-    gpu::Sampler shadow;  // depth compare, clamped
+    gpu::Sampler point;   // G-buffer texel fetches; shadow-map gathers (clamped)
     gpu::Sampler volume;  // trilinear + mips, transparent border: outside the grid is empty
 };
 

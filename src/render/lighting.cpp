@@ -47,6 +47,7 @@ LightingPass::LightingPass(const gpu::Context& ctx, bool clipmap) : ctx_(ctx) {
                        {sh::BIND_LIGHT_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_LIGHT_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_LIGHT_SHADOW_MAP, sampled, cs},
+                       {sh::BIND_LIGHT_SHADOW_GRADIENT, sampled, cs},
                        {sh::BIND_LIGHT_OUT_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_LIGHT_VOXEL_GRID, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs},
                        {sh::BIND_LIGHT_VOXEL_RADIANCE, sampled, cs},
@@ -73,6 +74,7 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .image(g.emission, gpu::use::ShaderRead)
         .image(g.depth, gpu::use::DepthRead)
         .image(in.shadowMap, gpu::use::ShaderRead)
+        .image(in.shadowGradient, gpu::use::ShaderRead)
         .image(volumes.radiance, gpu::use::ComputeRead);
     tracker.image(volumes.directional, gpu::use::ComputeRead);
     if (in.clip)
@@ -97,7 +99,8 @@ void LightingPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const Ligh
         .sampledImage(sh::BIND_LIGHT_DEPTH, g.depth.view(), point, VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
         .storageBuffer(sh::BIND_LIGHT_LIGHTS, in.lights.handle())
         .storageBuffer(sh::BIND_LIGHT_SHADOW_VIEWS, in.views.handle())
-        .sampledImage(sh::BIND_LIGHT_SHADOW_MAP, in.shadowMap.view(), in.samplers.shadow.handle())
+        .sampledImage(sh::BIND_LIGHT_SHADOW_MAP, in.shadowMap.view(), point)
+        .sampledImage(sh::BIND_LIGHT_SHADOW_GRADIENT, in.shadowGradient.view(), point)
         .storageImage(sh::BIND_LIGHT_OUT_DIRECT, direct.view())
         .uniformBuffer(sh::BIND_LIGHT_VOXEL_GRID, in.clip ? in.clip->levels.handle() : volumes.gridBuffer.handle())
         .sampledImage(sh::BIND_LIGHT_VOXEL_RADIANCE,

@@ -30,6 +30,7 @@ struct ShadowConeSettings {
 struct LightingInputs {
     const GBuffer& gbuffer;
     const gpu::Image& shadowMap;
+    const gpu::Image& shadowGradient;  // the casters' depth gradients (FrameTargets::shadowGradient)
     const Samplers& samplers;
     const gpu::Buffer& frame;
     const gpu::Buffer& lights;

@@ -267,8 +267,8 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     }
     if (!pv_) recordShadows(cmd);
     if (!voxelizer_) return;
-    const vxgi::ShadowInputs shadows{*lights_, lightCount_, *views_, targets_->shadowMap, samplers_->shadow.handle(),
-                                     settings_.shadows};
+    const vxgi::ShadowInputs shadows{*lights_,           lightCount_,           *views_, targets_->shadowMap,
+                                     targets_->shadowGradient, samplers_->point.handle(), settings_.shadows};
     // Emitters lit as patches leave their emission out of the voxel radiance.
     vxgi::VoxelLightSettings light = settings_.voxelLight;
     light.emissionInRadiance = patchCount_ == 0;
@@ -318,7 +318,8 @@ void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
 void Renderer::recordShadows(VkCommandBuffer cmd) {
     const StaticShadows statics =
         shadowsStale_ ? StaticShadows::Uncached : (staticDirty_ ? StaticShadows::Changed : StaticShadows::Kept);
-    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, targets_->shadowMap, statics, timers_.get());
+    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, {targets_->shadowMap, targets_->shadowGradient}, statics,
+                     timers_.get());
     shadowsStale_ = false;
 }
 
@@ -352,7 +353,7 @@ void Renderer::recordImage(VkCommandBuffer cmd) {
     // render's frame after a revoxelization).
     packRayData(cmd);
     const bool areaRays = areaLightRays();
-    LightingInputs lit{f.gbuffer, f.shadowMap, *samplers_, *frame_, *lights_, *views_, *volumes_,
+    LightingInputs lit{f.gbuffer, f.shadowMap, f.shadowGradient, *samplers_, *frame_, *lights_, *views_, *volumes_,
                        trace ? &*trace : nullptr, patchCount_ > 0};
     if (areaRays) {
         lit.rays = rayData_.get();

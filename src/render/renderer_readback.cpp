@@ -36,7 +36,7 @@ std::vector<MemoryItem> Renderer::memory() const {
     std::vector<MemoryItem> items = {
         {"geometry buffers", sceneGpu_->vertices.size() + sceneGpu_->indices.size() + sceneGpu_->draws.size()},
         {"textures", textures},
-        {"shadow maps", targets_->shadowMap.memorySize()},
+        {"shadow maps", targets_->shadowMap.memorySize() + targets_->shadowGradient.memorySize()},
         {"g-buffer", targets_->gbuffer.memoryBytes()},
         {"direct radiance", targets_->direct.memorySize() + targets_->visibility.memorySize()},
         {"cone-traced terms", targets_->diffuse.memorySize() + targets_->specular.memorySize() +

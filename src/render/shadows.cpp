@@ -13,6 +13,7 @@
 #include "gpuscene/scene_gpu.h"
 #include "shared/geometry_pass.h"
 #include "shared/scene_data.h"
+#include "shared/shadow_pass.h"
 
 namespace dvsgi::render {
 
@@ -26,6 +27,11 @@ const uint32_t kShadowVert[] = {
 const uint32_t kShadowFrag[] = {
 #include "shaders/shadow.frag.inc"
 };
+const uint32_t kShadowAlphaTestedFrag[] = {
+#include "shaders/shadow_alpha_tested.frag.inc"
+};
+
+constexpr VkFormat kGradientFormat = VK_FORMAT_R16G16_SFLOAT;
 
 glm::vec3 upFor(glm::vec3 dir) {
     return std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
@@ -117,6 +123,8 @@ LightSetup setupLights(const std::vector<scene::PlacedLight>& lights, const scen
 ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ctx) {
     gpu::GraphicsDesc g;
     g.vertex = kShadowVert;
+    g.fragment = kShadowFrag;
+    g.colorFormats = {kGradientFormat};
     g.depthFormat = VK_FORMAT_D32_SFLOAT;
     g.depthBias = true;
     gpu::LayoutDesc layout;
@@ -128,14 +136,14 @@ ShadowPass::ShadowPass(const gpu::Context& ctx, const SceneGpu& scene) : ctx_(ct
     layout.pushConstantBytes = sizeof(sh::DrawPush);
     layout.pushConstantStages = vs;
     opaque_ = gpu::Pipeline(ctx, g, layout, "shadow opaque");
-    g.fragment = kShadowFrag;
+    g.fragment = kShadowAlphaTestedFrag;
     alphaTested_ = gpu::Pipeline(ctx, g, layout, "shadow alpha-tested");
     for (const gpuscene::DrawRange& r : scene.ranges) hasDynamic_ = hasDynamic_ || r.dynamic;
 }
 
 void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map, StaticShadows statics,
-                        gpu::GpuTimers* timers) {
+                        const std::vector<sh::GpuShadowView>& hostViews, const ShadowTargets& map,
+                        StaticShadows statics, gpu::GpuTimers* timers) {
     gpu::GpuTimerScope timer(timers, cmd, "shadow maps");
     const uint32_t viewCount = uint32_t(hostViews.size());
     // A layer's static depth is reused where its view is the one it was
@@ -144,7 +152,7 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     std::vector<bool> stale(viewCount, true);
     reusedLayers_ = 0;
     drawnTriangles_ = 0;
-    if (statics == StaticShadows::Kept && keptMap_ == map.serial())
+    if (statics == StaticShadows::Kept && keptMap_ == map.depth.serial())
         for (uint32_t v = 0; v < viewCount && v < keptViews_.size(); ++v) {
             stale[v] = std::memcmp(&hostViews[v], &keptViews_[v], sizeof(sh::GpuShadowView)) != 0;
             reusedLayers_ += !stale[v];
@@ -166,25 +174,31 @@ void ShadowPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     } else {
         if (anyStale) {
             if (!cache_.handle()) {
-                gpu::ImageDesc d = map.desc();
+                gpu::ImageDesc d = map.depth.desc();
                 d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
                 d.name = "shadow map static cache";
                 cache_ = gpu::Image(ctx_, d);
+                d = map.gradient.desc();
+                d.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+                d.name = "shadow gradient static cache";
+                gradientCache_ = gpu::Image(ctx_, d);
             }
-            render(cmd, tracker, scene, views, hostViews, cache_, gpuscene::DrawFilter::Static, true, layers);
+            render(cmd, tracker, scene, views, hostViews, {cache_, gradientCache_}, gpuscene::DrawFilter::Static, true,
+                   layers);
         }
-        copyLayers(cmd, tracker, cache_, map, viewCount);
+        copyLayers(cmd, tracker, cache_, map.depth, VK_IMAGE_ASPECT_DEPTH_BIT, viewCount);
+        copyLayers(cmd, tracker, gradientCache_, map.gradient, VK_IMAGE_ASPECT_COLOR_BIT, viewCount);
         render(cmd, tracker, scene, views, hostViews, map, gpuscene::DrawFilter::Dynamic, false, nullptr);
     }
     keptViews_ = hostViews;
-    keptMap_ = map.serial();
+    keptMap_ = map.depth.serial();
 }
 
 void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
-                            uint32_t layers) const {
+                            VkImageAspectFlags aspect, uint32_t layers) const {
     tracker.image(from, gpu::use::TransferSrc).image(to, gpu::use::TransferDst, true).flush(cmd);
     VkImageCopy region{};
-    region.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, layers};
+    region.srcSubresource = {aspect, 0, 0, layers};
     region.dstSubresource = region.srcSubresource;
     region.extent = from.desc().extent;
     vkCmdCopyImage(cmd, from.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, to.handle(),
@@ -192,11 +206,13 @@ void ShadowPass::copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gp
 }
 
 void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                        const std::vector<sh::GpuShadowView>& hostViews, const gpu::Image& map,
+                        const std::vector<sh::GpuShadowView>& hostViews, const ShadowTargets& map,
                         gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers) {
-    // Discarding the image's contents is right only when every layer is rendered again.
-    tracker.image(map, gpu::use::DepthAttachment, clear && !layers).flush(cmd);
-    const uint32_t size = map.desc().extent.width;
+    // Discarding the images' contents is right only when every layer is rendered again.
+    tracker.image(map.depth, gpu::use::DepthAttachment, clear && !layers)
+        .image(map.gradient, gpu::use::ColorAttachment, clear && !layers)
+        .flush(cmd);
+    const uint32_t size = map.depth.desc().extent.width;
     // Both pipelines share one layout, so descriptors pushed once serve both.
     gpu::bind(cmd, opaque_);
     gpu::Descriptors()
@@ -207,13 +223,13 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
     scene.bindGeometry(cmd, opaque_.layout());
     const VkViewport viewport{0, 0, float(size), float(size), 0, 1};
     const VkRect2D scissor{{0, 0}, {size, size}};
-    // Slope-scaled bias handles grazing angles; the normal offset at lookup does the rest.
-    vkCmdSetDepthBias(cmd, 1.0f, 0.0f, 1.5f);
+    // No slope-scaled bias: the lookup extends each caster's plane to the receiver (shared/shadow_pass.h).
+    vkCmdSetDepthBias(cmd, sh::SHADOW_CONSTANT_BIAS, 0.0f, 0.0f);
 
     for (uint32_t v = 0; v < hostViews.size(); ++v) {
         if (layers && !(*layers)[v]) continue;
         VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        depth.imageView = map.layerView(v);
+        depth.imageView = map.depth.layerView(v);
         depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
         depth.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
         depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
@@ -222,6 +238,13 @@ void ShadowPass::render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneG
         ri.renderArea = scissor;
         ri.layerCount = 1;
         ri.pDepthAttachment = &depth;
+        // Cleared texels have no caster: a flat "plane" at the far depth.
+        VkRenderingAttachmentInfo gradient = depth;
+        gradient.imageView = map.gradient.layerView(v);
+        gradient.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        gradient.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+        ri.colorAttachmentCount = 1;
+        ri.pColorAttachments = &gradient;
         vkCmdBeginRendering(cmd, &ri);
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);

@@ -1,4 +1,6 @@
-// Shadow maps for every light: one layer of a depth array per view.
+// Shadow maps for every light: one layer of a depth array per view, and beside
+// it each texel's caster's depth gradient (the lookup, lib/shadow_map.glsl,
+// compares a receiver with the caster's plane; shared/shadow_pass.h).
 // Directional: an orthographic view fitted to the scene's bounding sphere,
 // preceded, when a focus is given that is much smaller than the scene, by one
 // fitted to the focus (a sphere around the camera: the shader uses it for the
@@ -65,16 +67,24 @@ enum class StaticShadows {
                // everything-dynamic one: the bench's, after Renderer::revoxelizeStatic)
 };
 
+// What ShadowPass renders (FrameTargets::shadowMap, shadowGradient): arrays of
+// the same size and layers.
+struct ShadowTargets {
+    const gpu::Image& depth;  // D32
+    const gpu::Image& gradient;  // RG16F
+};
+
 class ShadowPass {
 public:
     ShadowPass(const gpu::Context& ctx, const SceneGpu& scene);
-    // Renders view v of `views` (`hostViews` on the host) into layer v of
-    // `map` (FrameTargets::shadowMap).
+    // Renders view v of `views` (`hostViews` on the host) into layer v of `map`.
     void record(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map, StaticShadows statics,
+                const std::vector<shader::GpuShadowView>& hostViews, const ShadowTargets& map, StaticShadows statics,
                 gpu::GpuTimers* timers);
-    // Bytes of the kept static depth (0 when the map itself is kept).
-    VkDeviceSize cacheBytes() const { return cache_.handle() ? cache_.memorySize() : 0; }
+    // Bytes of the kept static depth and gradients (0 when the map itself is kept).
+    VkDeviceSize cacheBytes() const {
+        return cache_.handle() ? cache_.memorySize() + gradientCache_.memorySize() : 0;
+    }
     // Layers whose static depth the last record() reused (tests).
     uint32_t reusedLayers() const { return reusedLayers_; }
     // Triangles the last record() drew, over all its views.
@@ -84,16 +94,17 @@ public:
 private:
     // `layers`: only the views marked true (null: every view).
     void render(VkCommandBuffer cmd, gpu::Tracker& tracker, const SceneGpu& scene, const gpu::Buffer& views,
-                const std::vector<shader::GpuShadowView>& hostViews, const gpu::Image& map,
+                const std::vector<shader::GpuShadowView>& hostViews, const ShadowTargets& map,
                 gpuscene::DrawFilter draws, bool clear, const std::vector<bool>* layers);
     void copyLayers(VkCommandBuffer cmd, gpu::Tracker& tracker, const gpu::Image& from, const gpu::Image& to,
-                    uint32_t layers) const;
+                    VkImageAspectFlags aspect, uint32_t layers) const;
 
     const gpu::Context& ctx_;
-    gpu::Pipeline opaque_;       // depth only: no fragment shader, so no fragment work
+    gpu::Pipeline opaque_;       // depth and gradient, no discard (the depth test runs first)
     gpu::Pipeline alphaTested_;  // discards where MASK/BLEND coverage says there is no surface
     bool hasDynamic_ = false;
-    gpu::Image cache_;  // static draws' depth, when there are dynamic draws
+    gpu::Image cache_;       // static draws' depth, when there are dynamic draws
+    gpu::Image gradientCache_;  // and their gradients
     std::vector<shader::GpuShadowView> keptViews_;
     uint64_t keptMap_ = 0;  // serial of the map the kept depth belongs to (0: nothing kept)
     uint32_t reusedLayers_ = 0;

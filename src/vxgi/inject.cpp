@@ -33,6 +33,7 @@ InjectPass::InjectPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_INJECT_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
+                       {sh::BIND_INJECT_SHADOW_GRADIENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs},
                        {sh::BIND_INJECT_DIRECT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
                        {sh::BIND_INJECT_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
@@ -50,6 +51,7 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
     gpu::GpuTimerScope timer(timers, cmd, "voxel direct light");
     tracker.image(v.accum, gpu::use::ComputeRead)
         .image(s.shadowMap, gpu::use::ShaderRead)
+        .image(s.shadowGradient, gpu::use::ShaderRead)
         .buffer(v.index, gpu::use::BufferComputeRead)
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
@@ -65,7 +67,8 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageImage(sh::BIND_INJECT_ACCUM, v.accum.view())
         .storageBuffer(sh::BIND_INJECT_LIGHTS, s.lights.handle())
         .storageBuffer(sh::BIND_INJECT_SHADOW_VIEWS, s.views.handle())
-        .sampledImage(sh::BIND_INJECT_SHADOW_MAP, s.shadowMap.view(), s.shadowSampler)
+        .sampledImage(sh::BIND_INJECT_SHADOW_MAP, s.shadowMap.view(), s.gatherSampler)
+        .sampledImage(sh::BIND_INJECT_SHADOW_GRADIENT, s.shadowGradient.view(), s.gatherSampler)
         .storageImage(sh::BIND_INJECT_DIRECT, v.direct.view())
         .storageBuffer(sh::BIND_INJECT_LIST, v.list.handle())
         .storageBuffer(sh::BIND_INJECT_INDEX, v.index.handle())

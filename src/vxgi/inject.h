@@ -21,8 +21,9 @@ struct ShadowInputs {
     const gpu::Buffer& lights;
     uint32_t lightCount;
     const gpu::Buffer& views;
-    const gpu::Image& shadowMap;
-    VkSampler shadowSampler;
+    const gpu::Image& shadowMap;    // depth array (FrameTargets::shadowMap)
+    const gpu::Image& shadowGradient;  // its casters' depth gradients (FrameTargets::shadowGradient)
+    VkSampler gatherSampler;        // nearest, clamped: the lookup gathers 2 x 2 texels of both
     bool shadowsRendered;
 };
 

@@ -37,13 +37,15 @@ def read(path):
 diff = np.abs(read(gltf_exr) - read(builtin_exr)).max()
 print("built-in vs glTF Cornell box: max abs difference %.3g" % diff)
 # Bounds 1.5x the values measured on lavapipe (docs/quality.md,
-# docs/RELIABILITY.md): masked relative RMSE 0.0107, luminance ratio 1.0014,
-# built-in vs glTF 4.95e-5 (the compiled-in constants round differently).
+# docs/RELIABILITY.md): masked relative RMSE 0.0050, luminance ratio 0.9997
+# (since the shadow lookup compares with the casters' planes, 2026-12-07;
+# 0.0107 and 1.0014 before), built-in vs glTF 4.95e-5 (the compiled-in
+# constants round differently; 3.8e-5 now).
 failures = []
-if rel > 0.016:
-    failures.append("masked rel RMSE %.4f > 0.016" % rel)
-if abs(lum - 1.0) > 0.0021:
-    failures.append("mean luminance ratio %.4f off by more than 0.21 %%" % lum)
+if rel > 0.0075:
+    failures.append("masked rel RMSE %.4f > 0.0075" % rel)
+if abs(lum - 1.0) > 0.00045:
+    failures.append("mean luminance ratio %.4f off by more than 0.045 %%" % lum)
 if diff > 7.5e-5:
     failures.append("built-in Cornell box differs from the glTF one (%.3g)" % diff)
 print("\n".join("FAIL " + f for f in failures))

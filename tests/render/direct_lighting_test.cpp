@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include <glm/gtc/constants.hpp>
+#include <glm/gtx/quaternion.hpp>
 
 #include "gpu_fixture.h"
 
@@ -182,6 +183,91 @@ TEST_F(DirectLighting, OccluderCastsShadowForEveryLightType) {
         const uint32_t px = 50, py = 20;
         expectNear(pixel(img, px, py), unshadowed(pixelOnPlane(s, rs, px, py, 0.0f)), 4e-4f, "lit probe", px, py);
     }
+}
+
+// Shadow-map bias at edges where two surfaces meet (lib/shadow_map.glsl). The
+// sun travels down at 25 degrees from the vertical toward +x; the camera looks
+// straight down. A coarse map (256 texels over the whole scene: a texel is
+// about four pixels) puts every sub-texel error in plain view.
+constexpr float kGraze = glm::radians(25.0f);
+constexpr float kFloorHalf = 4.0f;
+
+render::RenderSettings coarseShadowSettings(scene::Scene& s) {
+    addQuad(s, addMaterial(s, glm::vec3(0.5f)), glm::vec3(0), kFloorHalf);
+    addTopDownCamera(s, 1.0f, glm::radians(40.0f));
+    addLight(s, directional(2.0f), glm::vec3(0, 5, 0), glm::vec3(std::sin(kGraze), -std::cos(kGraze), 0));
+    render::RenderSettings rs = settings(64);
+    rs.shadowMapSize = 256;
+    return rs;
+}
+
+// The scene-wide directional view's texel (render/shadows.cpp: its square is the bounds' diagonal).
+float coarseTexel(float top) {
+    return glm::length(glm::vec3(2.0f * kFloorHalf, top, 2.0f * kFloorHalf)) / 256.0f;
+}
+
+// A wall stands on the floor along x = 0, its face toward the sun, which grazes
+// it at 25 degrees as cornell-lights' sun grazes the Cornell box's ceiling. The
+// floor behind it is in its shadow for x in (0, height x tan 25 degrees). A
+// caster's slope-scaled bias pushed the wall's depth back by 1.5 x its steep
+// slope, and light came through the corner a texel and more behind the wall
+// (cornell-lights' row 107). The lookup compares the floor with the wall's own
+// plane: the whole shadow is dark from a texel behind the wall (nearer, the
+// 2 x 2 filter taps still see the lit floor in front of it).
+TEST_F(DirectLighting, GrazedWallShadowsTheFloorRightBehindIt) {
+    scene::Scene s;
+    const float half = 0.2f;  // the wall: 0.4 m high, 0.4 m long
+    render::RenderSettings rs = coarseShadowSettings(s);
+    addQuad(s, addMaterial(s, glm::vec3(0.5f)), glm::vec3(0, half, 0), half,
+            glm::rotation(glm::vec3(0, 1, 0), glm::vec3(-1, 0, 0)));
+    const image::ImageRGBA32F img = render(s, rs);
+    const float texel = coarseTexel(2.0f * half), shadowEnd = 2.0f * half * std::tan(kGraze);
+    int dark = 0, lit = 0;
+    for (uint32_t y = 0; y < rs.height; ++y)
+        for (uint32_t x = 0; x < rs.width; ++x) {
+            const glm::vec3 P = pixelOnPlane(s, rs, x, y, 0.0f);
+            if (std::abs(P.z) > half - texel) continue;
+            if (P.x > texel && P.x < shadowEnd - texel) {
+                ++dark;
+                EXPECT_EQ(pixel(img, x, y).x, 0.0f) << "floor in the wall's shadow at x = " << P.x << " m ("
+                                                    << P.x / texel << " texels behind the wall), pixel " << x << ", " << y;
+            } else if (P.x < -texel || P.x > shadowEnd + texel) {
+                ++lit;
+                expectNear(pixel(img, x, y), glm::vec3(0.5f * 2.0f * std::cos(kGraze) / kPi), 4e-4f, "lit floor", x, y);
+            }
+        }
+    std::printf("  texel %.4f m; %d shadowed and %d lit floor pixels checked\n", texel, dark, lit);
+    EXPECT_GT(dark, 150);
+    EXPECT_GT(lit, 1000);
+}
+
+// A closed box on the floor: its top and the side facing the sun meet at an
+// edge both see the sun over. The side's plane, extended past that edge, runs
+// inside the box under the top, so a lookup that trusted the caster's plane
+// alone darkened the top along the edge (Sibenik's faceted pillars); the lookup
+// also asks whether the caster lies in front of the receiver's own plane.
+TEST_F(DirectLighting, LitBoxTopIsLitUpToItsEdges) {
+    scene::Scene s;
+    const float half = 0.1f;
+    render::RenderSettings rs = coarseShadowSettings(s);
+    const int grey = addMaterial(s, glm::vec3(0.5f));
+    const glm::vec3 up(0, 1, 0);
+    for (const glm::vec3& n : {glm::vec3(0, 1, 0), glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 0, 1),
+                               glm::vec3(0, 0, -1)})
+        addQuad(s, grey, glm::vec3(0, half, 0) + n * half, half, glm::rotation(up, n));
+    const image::ImageRGBA32F img = render(s, rs);
+    const float texel = coarseTexel(2.0f * half);
+    int checked = 0;
+    for (uint32_t y = 0; y < rs.height; ++y)
+        for (uint32_t x = 0; x < rs.width; ++x) {
+            const glm::vec3 P = pixelOnPlane(s, rs, x, y, 2.0f * half);
+            // The top, all of it but a pixel's width along its edges.
+            if (std::max(std::abs(P.x), std::abs(P.z)) > half - 0.012f) continue;
+            ++checked;
+            expectNear(pixel(img, x, y), glm::vec3(0.5f * 2.0f * std::cos(kGraze) / kPi), 4e-4f, "box top", x, y);
+        }
+    std::printf("  texel %.4f m; %d pixels of the box's top checked\n", texel, checked);
+    EXPECT_GT(checked, 100);
 }
 
 TEST_F(DirectLighting, EmissionIsOneSidedUnlessDoubleSided) {

@@ -252,7 +252,7 @@ inline Rgba16Volume inject(const vxgi::VoxelVolumes& volumes, const vxgi::Inject
     const gpu::Buffer views =
         gpu::createBuffer(ctx, &noView, sizeof(noView), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "test shadow views");
     const UnusedShadowMap shadow;
-    const vxgi::ShadowInputs inputs{lightBuffer, uint32_t(setup.lights.size()), views, shadow.map,
+    const vxgi::ShadowInputs inputs{lightBuffer, uint32_t(setup.lights.size()), views, shadow.map, shadow.gradient,
                                     shadow.sampler.handle(), false};
     vxgi::VoxelLightSettings settings;
     settings.normalWeighted = normalWeighted;

@@ -108,17 +108,23 @@ UnusedShadowMap::UnusedShadowMap() {
     gpu::ImageDesc d;
     d.format = VK_FORMAT_D32_SFLOAT;
     d.extent = {4, 4, 1};
-    d.layers = 2;  // the shader declares a sampler2DArrayShadow, so the view must be an array
+    d.layers = 2;  // the shader declares a sampler2DArray, so the view must be an array
     d.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     d.name = "unused shadow map";
     map = gpu::Image(context(), d);
+    d.format = VK_FORMAT_R16G16_SFLOAT;
+    d.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+    d.name = "unused shadow gradients";
+    gradient = gpu::Image(context(), d);
     gpu::SamplerDesc sd;
-    sd.compare = true;
+    sd.filter = VK_FILTER_NEAREST;
     sd.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     sd.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler = gpu::Sampler(context(), sd);
-    context().submitAndWait(
-        [&](VkCommandBuffer cmd) { gpu::transition(cmd, map, gpu::use::Undefined, gpu::use::ShaderRead); });
+    context().submitAndWait([&](VkCommandBuffer cmd) {
+        gpu::transition(cmd, map, gpu::use::Undefined, gpu::use::ShaderRead);
+        gpu::transition(cmd, gradient, gpu::use::Undefined, gpu::use::ShaderRead);
+    });
 }
 
 void addInwardBox(scene::Scene& s, int material, glm::vec3 center, float h, bool openTop) {

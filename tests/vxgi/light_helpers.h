@@ -71,7 +71,8 @@ Rgba16Volume filterDirectionalLevel(const Rgba16Volume& src, int dir);
 // Inject's shadow-map binding must be valid even when no light samples it.
 struct UnusedShadowMap {
     UnusedShadowMap();
-    gpu::Image map;  // D32, 2 layers, in SHADER_READ_ONLY_OPTIMAL
+    gpu::Image map;    // D32, 2 layers, in SHADER_READ_ONLY_OPTIMAL
+    gpu::Image gradient;  // RG16F beside it, likewise
     gpu::Sampler sampler;
 };
 
