@@ -82,8 +82,7 @@ void main() {
     ivec3 v = listVoxel(entry);
     vec3 c = grid.originSize.xyz + (vec3(v) + 0.5) * grid.originSize.w;
     // The camera's G-buffer is exact and refills what it sees, so its band
-    // wins over a shadow map's (whose slope bias can put a lit surface
-    // behind the voxel that holds it).
+    // wins over a shadow map's (a texel holds the depth at its centre only).
     uint verdict = KEEP;
     for (uint k = 0u; k < pc.sizes.x; ++k) {
         uint s = classify(views[k], c);

@@ -22,13 +22,15 @@ layout(location = 1) flat in uint inMaterial;
 layout(location = 0) out vec2 outGradient;
 
 void main() {
-#ifdef DVSGI_ALPHA_TESTED
-    GpuMaterial m = materials[inMaterial];
-    if (m.flags.x != ALPHA_OPAQUE && !materialCovers(m, materialBaseColor(m, inUV).a, gl_FragCoord.xy)) discard;
-#endif
     // Depth per texel along x and y. A triangle is a plane, and a plane's
     // depth is affine in the map's texels (perspective views too), so the
     // quad's differences are exact. Clamped to what RG16F holds: a triangle
     // that steep is seen edge-on, and its plane's sign is all that matters.
+    // Taken before any discard: a quad's derivatives are undefined once a
+    // neighbour has been discarded.
     outGradient = clamp(vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z)), vec2(-SHADOW_GRADIENT_MAX), vec2(SHADOW_GRADIENT_MAX));
+#ifdef DVSGI_ALPHA_TESTED
+    GpuMaterial m = materials[inMaterial];
+    if (m.flags.x != ALPHA_OPAQUE && !materialCovers(m, materialBaseColor(m, inUV).a, gl_FragCoord.xy)) discard;
+#endif
 }

@@ -33,7 +33,7 @@ float shadowVisibility(GpuLight light, vec3 P, vec3 N, float normalOffsetTexels)
     if (count == 2u) {
         GpuShadowView focus = shadowViews[view];
         vec4 clip = focus.viewProj * vec4(P + N * focus.params.x * normalOffsetTexels, 1.0);
-        // Two texels of margin keep the bilinear compare inside the map.
+        // Two texels of margin keep the 2 x 2 texels inside the focus view.
         float inside = 1.0 - 4.0 / size;
         if (any(greaterThan(abs(clip.xy / clip.w), vec2(inside)))) view += 1u;
     } else if (count == 6u) {
@@ -49,7 +49,15 @@ float shadowVisibility(GpuLight light, vec3 P, vec3 N, float normalOffsetTexels)
     vec3 Q = P + N * texel * normalOffsetTexels;
     vec3 ndc = shadowNdc(sv, Q);
     if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0) return 1.0;
-    vec3 uv = vec3(ndc.xy * 0.5 + 0.5, float(view));
+    // The 2 x 2 texels are picked here, not by the gather: hardware picks them
+    // from a fixed-point coordinate, and near a texel's edge its quad and a
+    // float fract() disagree by a texel, which would extend each caster's
+    // plane from the wrong place. At the map's edge the quad stays inside
+    // the map and the offsets run past [0, 1]; the weights do not.
+    vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;
+    vec2 corner = clamp(floor(t), vec2(0.0), vec2(size - 2.0));
+    vec2 f = t - corner;
+    vec3 uv = vec3((corner + 1.0) / size, float(view));
     // Each of the 2 x 2 texels around the lookup holds its caster's depth at
     // its centre and the caster's gradient. That caster shadows the receiver
     // where the receiver lies behind the caster's plane and the caster lies in
@@ -58,7 +66,6 @@ float shadowVisibility(GpuLight light, vec3 P, vec3 N, float normalOffsetTexels)
     // corner, a wall the light grazes hides the receiver behind its plane; at
     // a convex edge the face beyond the edge lies behind the receiver's plane.
     // textureGather's order: (0,1) (1,1) (1,0) (0,0).
-    vec2 f = fract(uv.xy * size - 0.5);
     vec4 dx = vec4(f.x, f.x - 1.0, f.x - 1.0, f.x), dy = vec4(f.y - 1.0, f.y - 1.0, f.y, f.y);
     vec4 depth = textureGather(shadowMap, uv, 0);
     vec4 plane = depth + textureGather(shadowGradient, uv, 0) * dx + textureGather(shadowGradient, uv, 1) * dy;
@@ -68,5 +75,6 @@ float shadowVisibility(GpuLight light, vec3 P, vec3 N, float normalOffsetTexels)
     float margin = SHADOW_PLANE_MARGIN * abs(shadowNdc(sv, Q + along * texel).z - ndc.z);
     vec4 shadowed = vec4(greaterThan(vec4(ndc.z), plane + margin)) * vec4(lessThan(depth, receiverPlane - margin));
     vec4 lit = 1.0 - shadowed;
-    return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
+    vec2 w = clamp(f, 0.0, 1.0);
+    return mix(mix(lit.w, lit.z, w.x), mix(lit.x, lit.y, w.x), w.y);
 }

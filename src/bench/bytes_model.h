@@ -19,7 +19,7 @@ struct ModelInputs {
     uint32_t outputWidth = 0, outputHeight = 0;
     uint32_t internalWidth = 0, internalHeight = 0;  // output x supersample: G-buffer and screen terms
     uint32_t traceWidth = 0, traceHeight = 0;        // cone-tracing size (internal x trace scale)
-    uint32_t shadowMapSize = 0, shadowViews = 0;     // D32 layers rendered per frame
+    uint32_t shadowMapSize = 0, shadowViews = 0;     // D32 + RG16F layers rendered per frame
     uint64_t staticGeometryBytes = 0;   // vertex + index bytes of the static draws
     uint64_t dynamicGeometryBytes = 0;  // the same for the dynamic draws
     uint32_t bounces = 1;  // voxel bounces per frame, each followed by a re-filtering

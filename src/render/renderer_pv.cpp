@@ -21,9 +21,12 @@ namespace dvsgi::render {
 namespace sh = dvsgi::shader;
 
 void Renderer::uploadPvViews() {
-    // A shadow map's slope-scaled bias (1.5 texels of depth slope) puts a lit
-    // surface behind where it is; four texels of tolerance keep the voxels
-    // that hold such surfaces up to grazing angles of about 70 degrees.
+    // Four texels of tolerance were set for shadow maps drawn with a
+    // slope-scaled bias (1.5 texels of depth slope), which put a lit surface
+    // behind where it is, and kept the voxels holding such surfaces up to
+    // grazing angles of about 70 degrees. The maps hold exact depths since
+    // they keep their casters' planes (shared/shadow_pass.h); the tolerance
+    // stays, conservative, as pv's coverage was measured with it.
     constexpr float kShadowTexels = 4.0f;
     std::vector<sh::PvDepthView> views;
     const glm::mat4 camera = viewProjection();

@@ -46,7 +46,7 @@ std::vector<MemoryItem> Renderer::memory() const {
                                                             : 0)},
         {"output", targets_->output.memorySize()},
     };
-    if (shadows_->cacheBytes()) items.push_back({"shadow maps: kept static depth", shadows_->cacheBytes()});
+    if (shadows_->cacheBytes()) items.push_back({"shadow maps: kept static depth and gradients", shadows_->cacheBytes()});
     if (targets_->temporal.memoryBytes()) items.push_back({"indirect history", targets_->temporal.memoryBytes()});
     if (voxelizer_) {
         items.push_back({"voxel slot index", volumes_->index.size()});
