@@ -28,7 +28,8 @@ void main() {
     // that steep is seen edge-on, and its plane's sign is all that matters.
     // Taken before any discard: a quad's derivatives are undefined once a
     // neighbour has been discarded.
-    outGradient = clamp(vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z)), vec2(-SHADOW_GRADIENT_MAX), vec2(SHADOW_GRADIENT_MAX));
+    vec2 gradient = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z));
+    outGradient = clamp(gradient, vec2(-SHADOW_GRADIENT_MAX), vec2(SHADOW_GRADIENT_MAX));
 #ifdef DVSGI_ALPHA_TESTED
     GpuMaterial m = materials[inMaterial];
     if (m.flags.x != ALPHA_OPAQUE && !materialCovers(m, materialBaseColor(m, inUV).a, gl_FragCoord.xy)) discard;

@@ -32,7 +32,7 @@ DVSGI_CONST(uint, BIND_INJECT_INDEX, 7);  // slot index volume: occupancy for vo
 DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direct light + emission, a = 1 (1 - side code * TWO_SIDED_OPACITY_STEP: two-sided)
 DVSGI_CONST(uint, BIND_INJECT_SIDES, 9);  // per-slot side light of two-sided voxels (lib/voxel_sides.glsl)
 DVSGI_CONST(uint, BIND_INJECT_RAY_OCCUPANCY, 10);  // RAY_OCCUPANCY: the rays' occupancy bits (lib/voxel_occupancy.glsl)
-DVSGI_CONST(uint, BIND_INJECT_SHADOW_GRADIENT, 11);  // the casters' depth gradients (shadow.frag), beside BIND_INJECT_SHADOW_MAP
+DVSGI_CONST(uint, BIND_INJECT_SHADOW_GRADIENT, 11);  // the map's casters' depth gradients (shadow.frag)
 
 DVSGI_END
 

@@ -28,7 +28,7 @@ DVSGI_CONST(uint, BIND_LIGHT_RAY_INDEX, 14);
 DVSGI_CONST(uint, BIND_LIGHT_RAY_NORMALS, 15);
 DVSGI_CONST(uint, BIND_LIGHT_RAY_OCCUPANCY, 16);
 DVSGI_CONST(uint, BIND_LIGHT_RAY_EXTENTS, 17);
-DVSGI_CONST(uint, BIND_LIGHT_SHADOW_GRADIENT, 18);  // the casters' depth gradients (shadow.frag), beside BIND_LIGHT_SHADOW_MAP
+DVSGI_CONST(uint, BIND_LIGHT_SHADOW_GRADIENT, 18);  // the map's casters' depth gradients (shadow.frag)
 
 // Shadow cones and area-light visibility march like the gather's cones.
 struct LightingPush {

@@ -56,8 +56,9 @@ FrameTargets createFrameTargets(const gpu::Context& ctx, const FrameSize& s) {
                           "shadow map array",
                           std::max(s.shadowViews, 2u));
     t.shadowGradient = image2D(ctx, VK_FORMAT_R16G16_SFLOAT, s.shadowMapSize, s.shadowMapSize,
-                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                            "shadow gradient array", std::max(s.shadowViews, 2u));
+                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                               "shadow gradient array", std::max(s.shadowViews, 2u));
     t.direct = image2D(ctx, VK_FORMAT_R32G32B32A32_SFLOAT, iw, ih, storage, "direct radiance");
     t.visibility = image2D(ctx, VK_FORMAT_R16_SFLOAT, iw, ih, storage, "light visibility");
     t.diffuse = image2D(ctx, VK_FORMAT_R16G16B16A16_SFLOAT, iw, ih, storage, "indirect diffuse");

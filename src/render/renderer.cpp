@@ -267,8 +267,13 @@ void Renderer::recordVoxels(VkCommandBuffer cmd) {
     }
     if (!pv_) recordShadows(cmd);
     if (!voxelizer_) return;
-    const vxgi::ShadowInputs shadows{*lights_,           lightCount_,           *views_, targets_->shadowMap,
-                                     targets_->shadowGradient, samplers_->point.handle(), settings_.shadows};
+    const vxgi::ShadowInputs shadows{*lights_,
+                                     lightCount_,
+                                     *views_,
+                                     targets_->shadowMap,
+                                     targets_->shadowGradient,
+                                     samplers_->point.handle(),
+                                     settings_.shadows};
     // Emitters lit as patches leave their emission out of the voxel radiance.
     vxgi::VoxelLightSettings light = settings_.voxelLight;
     light.emissionInRadiance = patchCount_ == 0;
@@ -318,8 +323,8 @@ void Renderer::recordStaticVoxels(VkCommandBuffer cmd) {
 void Renderer::recordShadows(VkCommandBuffer cmd) {
     const StaticShadows statics =
         shadowsStale_ ? StaticShadows::Uncached : (staticDirty_ ? StaticShadows::Changed : StaticShadows::Kept);
-    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, {targets_->shadowMap, targets_->shadowGradient}, statics,
-                     timers_.get());
+    const ShadowTargets map{targets_->shadowMap, targets_->shadowGradient};
+    shadows_->record(cmd, tracker_, *sceneGpu_, *views_, shadowViews_, map, statics, timers_.get());
     shadowsStale_ = false;
 }
 

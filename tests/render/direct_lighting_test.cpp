@@ -231,8 +231,9 @@ TEST_F(DirectLighting, GrazedWallShadowsTheFloorRightBehindIt) {
             if (std::abs(P.z) > half - texel) continue;
             if (P.x > texel && P.x < shadowEnd - texel) {
                 ++dark;
-                EXPECT_EQ(pixel(img, x, y).x, 0.0f) << "floor in the wall's shadow at x = " << P.x << " m ("
-                                                    << P.x / texel << " texels behind the wall), pixel " << x << ", " << y;
+                EXPECT_EQ(pixel(img, x, y).x, 0.0f)
+                    << "floor in the wall's shadow at x = " << P.x << " m (" << P.x / texel
+                    << " texels behind the wall), pixel " << x << ", " << y;
             } else if (P.x < -texel || P.x > shadowEnd + texel) {
                 ++lit;
                 expectNear(pixel(img, x, y), glm::vec3(0.5f * 2.0f * std::cos(kGraze) / kPi), 4e-4f, "lit floor", x, y);
