@@ -8,7 +8,7 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DDVSGI_BUILD_TESTS=OFF
 cmake --build build --target dvsgi
 mkdir -p out
 # The defaults' 128^3 voxels: the converged bounces (--bounces auto, 24 of
-# them, over occupied voxels only) and the image take 13-14 s on a 2-core lavapipe
-# machine (2026-12-06); a GPU does this in milliseconds.
+# them, over occupied voxels only) and the image take about 16 s on a 2-core lavapipe
+# machine (2026-12-07, `time` of this command); a GPU does this in milliseconds.
 ./build/dvsgi render --width 512 --height 512 --voxels 128 \
   --out out/cornell.exr --png out/cornell.png --metrics out/cornell-metrics.json
