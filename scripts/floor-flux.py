@@ -1,0 +1,67 @@
+#!/usr/bin/python3
+"""The direct light the voxels hold on a room's floor against the floor's exact direct light.
+
+    scripts/floor-flux.py SCENE.gltf DUMP.npy [DUMP.npy ...] --floor X0 X1 Z0 Z1 [--hole X0 X1 Z0 Z1]
+                          [--points 200000] [--seed 1]
+
+DUMP.npy: `dvsgi render SCENE.gltf --bounces 0 --voxel-dump DUMP.npy` (any image size; the grid is
+what matters). The floor is the plane y = 0 over [X0, X1] x [Z0, Z1], less an optional covered
+rectangle (--hole, e.g. a block standing on it). Prints, per dump, the floor voxels' summed direct
+radiance times their face area (voxels whose normal is within 25 degrees of +y and whose centre lies
+within a voxel of the floor) over the same integral traced exactly: uniform points on the floor, lit
+with scripts/bounce-reference.py's tracer (its scope applies: constant albedos, punctual lights,
+no node transforms). Luminance (Rec. 709). For scripts/window-room-scene.py's room:
+--floor 0 4 0 5 --hole 1.2 2.0 1.5 2.3.
+"""
+import argparse
+import importlib.util
+import os
+
+import numpy as np
+
+LUMA = np.array([0.2126, 0.7152, 0.0722])
+
+ap = argparse.ArgumentParser()
+ap.add_argument("scene")
+ap.add_argument("dumps", nargs="+")
+ap.add_argument("--floor", type=float, nargs=4, required=True)
+ap.add_argument("--hole", type=float, nargs=4)
+ap.add_argument("--points", type=int, default=200000)
+ap.add_argument("--seed", type=int, default=1)
+a = ap.parse_args()
+
+here = os.path.dirname(os.path.abspath(__file__))
+spec = importlib.util.spec_from_file_location("bounce_reference", os.path.join(here, "bounce-reference.py"))
+br = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(br)
+tris, albedo, emission, lights, _ = br.load(a.scene)
+tracer = br.Tracer(tris, albedo, emission)
+
+rng = np.random.default_rng(a.seed)
+x0, x1, z0, z1 = a.floor
+p = np.stack([x0 + rng.random(a.points) * (x1 - x0), np.zeros(a.points), z0 + rng.random(a.points) * (z1 - z0)], 1)
+keep = np.ones(a.points, bool)
+if a.hole:
+    hx0, hx1, hz0, hz1 = a.hole
+    keep = ~((p[:, 0] > hx0) & (p[:, 0] < hx1) & (p[:, 2] > hz0) & (p[:, 2] < hz1))
+# The radiance under unit albedo, scaled by each point's own albedo below: the floor's
+# material is found by the ray straight down onto it.
+up = np.ascontiguousarray(np.broadcast_to(np.array([0.0, 1.0, 0.0]), p.shape))
+_, tri = tracer.hit(p + up * 1e-3, -up)
+if (tri < 0).any():
+    raise SystemExit("floor-flux: %d points have no floor under them" % int((tri < 0).sum()))
+radiance = br.direct(tracer, lights, p, up, albedo[tri], rng) @ LUMA
+exact = (radiance * keep).sum() / a.points * (x1 - x0) * (z1 - z0)
+
+for path in a.dumps:
+    d = np.load(path)
+    grid, centre, normal, direct = d[:, 0:3], d[:, 3:6], d[:, 6:9], d[:, 12:15] @ LUMA
+    # The voxel's size: centres one grid step apart along x.
+    step = grid[:, 0] != grid[0, 0]
+    size = float(np.median((centre[step, 0] - centre[0, 0]) / (grid[step, 0] - grid[0, 0])))
+    on = ((normal[:, 1] > np.cos(np.radians(25.0))) & (np.abs(centre[:, 1]) < size) &
+          (centre[:, 0] > x0 - size) & (centre[:, 0] < x1 + size) & (centre[:, 2] > z0 - size) &
+          (centre[:, 2] < z1 + size))
+    held = direct[on].sum() * size * size
+    print("%s: voxel %.4f m, %d floor voxels: held %.4f, exact %.4f, ratio %.4f" %
+          (path, size, on.sum(), held, exact, held / exact))
