@@ -8,7 +8,9 @@ bounces must converge against the indirect light, not against all of it. With --
 replaced by a spot light under the ceiling (3 W/sr, cone 20 to 40 degrees) tilted toward the +x
 wall: the room is lit from inside only, by a light type the shared scenes do not have.
 
-    scripts/window-room-scene.py OUT.gltf [--spot]        (also writes OUT.bin)
+    scripts/window-room-scene.py OUT.gltf [--spot] [--no-block]        (also writes OUT.bin)
+
+--no-block leaves the block out (the sun's patch then lies on the bare floor).
 """
 import math
 import sys
@@ -18,7 +20,7 @@ from quad_gltf import box_quads, camera_and_light_nodes, write_quads
 W, H, D, T = 4.0, 2.8, 5.0, 0.12  # inside x in [0, W], y in [0, H], z in [0, D]; wall thickness
 
 
-def write_room(path, spot=False):
+def write_room(path, spot=False, block=True):
     quads = []
     for lo, hi in (([-T, -T, -T], [W + T, 0, D + T]),          # floor
                    ([-T, H, -T], [W + T, H + T, D + T]),        # ceiling
@@ -30,7 +32,8 @@ def write_room(path, spot=False):
                    ([W, 0.9, -T], [W + T, 2.1, 1.8]),           # and on its two sides
                    ([W, 0.9, 3.2], [W + T, 2.1, D + T]),
                    ([1.2, 0, 1.5], [2.0, 0.9, 2.3])):           # the block
-        quads += box_quads(lo, hi)
+        if block or lo != [1.2, 0, 1.5]:
+            quads += box_quads(lo, hi)
     eye, target = [0.4, 1.6, 4.6], [3.6, 0.9, 1.8]
     if spot:
         nodes = camera_and_light_nodes(eye, target, light_dir=[0.45, -1.0, -0.2], light_at=[1.8, H - 0.1, 2.8])
@@ -44,7 +47,8 @@ def write_room(path, spot=False):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) not in (2, 3) or (len(sys.argv) == 3 and sys.argv[2] != "--spot"):
+    flags = sys.argv[2:]
+    if len(sys.argv) < 2 or any(f not in ("--spot", "--no-block") for f in flags):
         print(__doc__.strip(), file=sys.stderr)
         sys.exit(2)
-    write_room(sys.argv[1], spot=len(sys.argv) == 3)
+    write_room(sys.argv[1], spot="--spot" in flags, block="--no-block" not in flags)
