@@ -10,7 +10,7 @@ rectangle (--hole, e.g. a block standing on it). Prints, per dump, the floor vox
 radiance times their face area (voxels whose normal is within 25 degrees of +y and whose centre lies
 within a voxel of the floor) over the same integral traced exactly: uniform points on the floor, lit
 with scripts/bounce-reference.py's tracer (its scope applies: constant albedos, punctual lights,
-no node transforms). Luminance (Rec. 709). For scripts/window-room-scene.py's room:
+no node transforms). Also the light's centroid on the floor, both ways. Luminance (Rec. 709). For scripts/window-room-scene.py's room:
 --floor 0 4 0 5 --hole 1.2 2.0 1.5 2.3.
 """
 import argparse
@@ -52,6 +52,9 @@ if (tri < 0).any():
     raise SystemExit("floor-flux: %d points have no floor under them" % int((tri < 0).sum()))
 radiance = br.direct(tracer, lights, p, up, albedo[tri], rng) @ LUMA
 exact = (radiance * keep).sum() / a.points * (x1 - x0) * (z1 - z0)
+w = radiance * keep
+print("exact: the light's centroid on the floor at x %.3f, z %.3f" % ((w * p[:, 0]).sum() / w.sum(),
+                                                                    (w * p[:, 2]).sum() / w.sum()))
 
 for path in a.dumps:
     d = np.load(path)
@@ -63,5 +66,7 @@ for path in a.dumps:
           (centre[:, 0] > x0 - size) & (centre[:, 0] < x1 + size) & (centre[:, 2] > z0 - size) &
           (centre[:, 2] < z1 + size))
     held = direct[on].sum() * size * size
-    print("%s: voxel %.4f m, %d floor voxels: held %.4f, exact %.4f, ratio %.4f" %
-          (path, size, on.sum(), held, exact, held / exact))
+    v = direct * on
+    print("%s: voxel %.4f m, %d floor voxels: held %.4f, exact %.4f, ratio %.4f; centroid x %.3f, z %.3f" %
+          (path, size, on.sum(), held, exact, held / exact, (v * centre[:, 0]).sum() / v.sum(),
+           (v * centre[:, 2]).sum() / v.sum()))
