@@ -14,12 +14,10 @@ no node transforms). Also the light's centroid on the floor, both ways. Luminanc
 --floor 0 4 0 5 --hole 1.2 2.0 1.5 2.3.
 """
 import argparse
-import importlib.util
-import os
 
 import numpy as np
 
-LUMA = np.array([0.2126, 0.7152, 0.0722])
+from tracer_probe import LUMA, dump_grid, scene_tracer
 
 ap = argparse.ArgumentParser()
 ap.add_argument("scene")
@@ -30,12 +28,7 @@ ap.add_argument("--points", type=int, default=200000)
 ap.add_argument("--seed", type=int, default=1)
 a = ap.parse_args()
 
-here = os.path.dirname(os.path.abspath(__file__))
-spec = importlib.util.spec_from_file_location("bounce_reference", os.path.join(here, "bounce-reference.py"))
-br = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(br)
-tris, albedo, emission, lights, _ = br.load(a.scene)
-tracer = br.Tracer(tris, albedo, emission)
+br, tracer, lights = scene_tracer(a.scene)
 
 rng = np.random.default_rng(a.seed)
 x0, x1, z0, z1 = a.floor
@@ -50,18 +43,15 @@ up = np.ascontiguousarray(np.broadcast_to(np.array([0.0, 1.0, 0.0]), p.shape))
 _, tri = tracer.hit(p + up * 1e-3, -up)
 if (tri < 0).any():
     raise SystemExit("floor-flux: %d points have no floor under them" % int((tri < 0).sum()))
-radiance = br.direct(tracer, lights, p, up, albedo[tri], rng) @ LUMA
+radiance = br.direct(tracer, lights, p, up, tracer.albedo[tri], rng) @ LUMA
 exact = (radiance * keep).sum() / a.points * (x1 - x0) * (z1 - z0)
 w = radiance * keep
 print("exact: the light's centroid on the floor at x %.3f, z %.3f" % ((w * p[:, 0]).sum() / w.sum(),
                                                                     (w * p[:, 2]).sum() / w.sum()))
 
 for path in a.dumps:
-    d = np.load(path)
-    grid, centre, normal, direct = d[:, 0:3], d[:, 3:6], d[:, 6:9], d[:, 12:15] @ LUMA
-    # The voxel's size: centres one grid step apart along x.
-    step = grid[:, 0] != grid[0, 0]
-    size = float(np.median((centre[step, 0] - centre[0, 0]) / (grid[step, 0] - grid[0, 0])))
+    d, _, centre, size, _ = dump_grid(path)
+    normal, direct = d[:, 6:9], d[:, 12:15] @ LUMA
     on = ((normal[:, 1] > np.cos(np.radians(25.0))) & (np.abs(centre[:, 1]) < size) &
           (centre[:, 0] > x0 - size) & (centre[:, 0] < x1 + size) & (centre[:, 2] > z0 - size) &
           (centre[:, 2] < z1 + size))

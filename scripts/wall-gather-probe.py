@@ -11,12 +11,10 @@ the surface). Prints per band the two means and their ratio: where the ratio is 
 not, the error lies in where the gather's rays meet the voxels, not in the voxels' light.
 """
 import argparse
-import importlib.util
-import os
 
 import numpy as np
 
-LUMA = np.array([0.2126, 0.7152, 0.0722])
+from tracer_probe import LUMA, dump_grid, scene_tracer
 
 ap = argparse.ArgumentParser()
 ap.add_argument("scene")
@@ -28,18 +26,9 @@ ap.add_argument("--rays", type=int, default=16)
 ap.add_argument("--seed", type=int, default=3)
 a = ap.parse_args()
 
-here = os.path.dirname(os.path.abspath(__file__))
-spec = importlib.util.spec_from_file_location("bounce_reference", os.path.join(here, "bounce-reference.py"))
-br = importlib.util.module_from_spec(spec)
-spec.loader.exec_module(br)
-tris, albedo, emission, lights, _ = br.load(a.scene)
-tracer = br.Tracer(tris, albedo, emission)
-
-d = np.load(a.dump)
-grid, centre, direct = d[:, 0:3].astype(int), d[:, 3:6], d[:, 12:15] @ LUMA
-step = grid[:, 0] != grid[0, 0]
-size = float(np.median((centre[step, 0] - centre[0, 0]) / (grid[step, 0] - grid[0, 0])))
-origin = centre[0] - (grid[0] + 0.5) * size
+br, tracer, lights = scene_tracer(a.scene)
+d, grid, centre, size, origin = dump_grid(a.dump)
+direct = d[:, 12:15] @ LUMA
 light_of = {tuple(g): v for g, v in zip(grid, direct)}
 
 rng = np.random.default_rng(a.seed)
