@@ -5,6 +5,7 @@
 #include "shared/inject_pass.h"
 #include "shared/voxel_data.h"
 #include "shared/voxel_list_pass.h"
+#include "shared/bounce_pass.h"
 
 // Direct light per occupied voxel (paper section VI), visible or not: Lambert
 // radiance rho/pi * E * attenuation * visibility for every light, plus the
@@ -32,12 +33,12 @@ layout(set = 0, binding = BIND_INJECT_OUT_RADIANCE, rgba16f) uniform writeonly i
 layout(set = 0, binding = BIND_INJECT_SIDES, rgba32ui) uniform uimage3D sides;
 VOXEL_INDEX_BLOCK(BIND_INJECT_INDEX, readonly);
 VOXEL_LIST_BLOCK(BIND_INJECT_LIST, readonly);
+VOXEL_EXTENTS_BLOCK(BIND_INJECT_EXTENTS, readonly);
 layout(push_constant) uniform Push { VoxelLightPush pc; };
 #ifdef DVSGI_RAY_OCCUPANCY
 // Built with RAY_OCCUPANCY where this frame's rays' occupancy bits are packed
 // before the voxel light (a fitted grid's): voxel shadow rays cross empty
 // cells in one step, meeting the same voxels.
-#include "shared/bounce_pass.h"
 layout(set = 0, binding = BIND_INJECT_RAY_OCCUPANCY, std430) readonly buffer RayOccupancy { uint rayOccupancy[]; };
 #define VOXEL_TRACE_SKIPS_EMPTY
 #endif
@@ -46,6 +47,7 @@ layout(set = 0, binding = BIND_INJECT_RAY_OCCUPANCY, std430) readonly buffer Ray
 #include "lib/voxel_attributes.glsl"
 #include "lib/voxel_sides.glsl"
 #include "lib/voxel_index.glsl"
+#include "lib/voxel_extents.glsl"
 #include "lib/lights.glsl"
 #include "lib/shadow_map.glsl"
 #ifdef DVSGI_RAY_OCCUPANCY
@@ -55,11 +57,33 @@ layout(set = 0, binding = BIND_INJECT_RAY_OCCUPANCY, std430) readonly buffer Ray
 #include "lib/voxel_list_dispatch.glsl"
 
 
-float visibility(GpuLight light, uint mode, vec3 P, vec3 n, vec3 L, float dist) {
-    if (mode == OCCLUSION_SHADOW_MAP && pc.flags.w != 0u) return shadowVisibility(light, P, n, pc.params.y);
+// The shadow map is looked up at a point on the surface (Pmap), the voxel
+// rays start from Pray, a voxel face or half a voxel out from the centre:
+// their first sample lies a voxel along the light, and from a point inside
+// the voxel it met the surface's own neighbour under a grazing light.
+float visibility(GpuLight light, uint mode, vec3 Pmap, vec3 Pray, vec3 n, vec3 L, float dist) {
+    if (mode == OCCLUSION_SHADOW_MAP && pc.flags.w != 0u) return shadowVisibility(light, Pmap, n, pc.params.y);
     if (mode == OCCLUSION_RAYCAST_HARD || mode == OCCLUSION_RAYCAST_SOFT)
-        return voxelRayVisibility(P, L, dist, mode == OCCLUSION_RAYCAST_SOFT, pc.params.x);
+        return voxelRayVisibility(Pray, L, dist, mode == OCCLUSION_RAYCAST_SOFT, pc.params.x);
     return 1.0;
+}
+
+// Where a voxel's surface facing +axis a (or -a) lies, for its shadow
+// lookups: the middle of the box its extents cover, on that box's face on
+// that side, at most an eighth of a voxel in front of the surface. Looked up
+// half a voxel off the centre, a floor's voxel was lit from up to a voxel
+// above the floor, and every shadow edge moved that height times the tangent
+// of the light's angle toward the light: the sun's patch in a room lit
+// through a window lay a voxel nearer the window, and the window's wall saw
+// it 6-9 % too bright (docs/quality.md, "Where a voxel's light is looked
+// up"). Without extents (the pv voxelizer's, a clipmap's scrolled voxels)
+// the box is the voxel, and this is its face.
+vec3 surfaceFace(ivec3 v, uint slot, int a, bool plus, float s) {
+    vec3 lo, hi;
+    extentBox(v, voxelExtents[slot], lo, hi);
+    vec3 q = 0.5 * (lo + hi);
+    q[a] = plus ? hi[a] : lo[a];
+    return grid.originSize.xyz + q * s;
 }
 
 void main() {
@@ -77,12 +101,16 @@ void main() {
     float planeW = edges ? voxelPlaneShare(slot, pos, neg) : 1.0;
     float s = grid.originSize.w;
     vec3 centre = grid.originSize.xyz + (vec3(v) + 0.5) * s;
-    // Shadows are looked up at the voxel centre pushed half a voxel along its
-    // normal (off the surface). The light's falloff is taken at the centre:
-    // over where planes cross voxels the surface lies there on average; taken
-    // at P, half a voxel nearer a point light, cornell-lights' first two
-    // bounces came out 1.0 % and 1.2 % too bright at 64^3 (docs/quality.md).
+    // Shadows are looked up on the surface of a floor's or a wall's voxel
+    // (surfaceFace), elsewhere at the voxel centre pushed half a voxel along
+    // its normal (the mean normal of an edge or a tilted staircase is no plane
+    // the extents place). The light's falloff is taken at the centre: over
+    // where planes cross voxels the surface lies there on average; taken half
+    // a voxel nearer a point light, cornell-lights' first two bounces came out
+    // 1.0 % and 1.2 % too bright at 64^3 (docs/quality.md).
+    int nAxis = abs(n.x) >= abs(n.y) && abs(n.x) >= abs(n.z) ? 0 : (abs(n.y) >= abs(n.z) ? 1 : 2);
     vec3 P = centre + n * (0.5 * s);
+    vec3 onSurface = alongAnAxis(n) ? surfaceFace(v, slot, nAxis, n[nAxis] > 0.0, s) : P;
     // A two-sided voxel's sides (+axis, -axis) are lit as faces with those
     // normals, from just outside the voxel on their side: a thin wall's
     // shadowed face stays dark however the wall's sunlit face is weighted.
@@ -120,14 +148,14 @@ void main() {
         float cosN = max(dot(n, L), 0.0);
         if (!edges) {
             float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : cosN;
-            if (att > 0.0) radiance += albedo / PI * E * att * visibility(light, mode, P, n, L, dist);
+            if (att > 0.0) radiance += albedo / PI * E * att * visibility(light, mode, onSurface, P, n, L, dist);
         } else {
             // A block's edge voxel holds a sunlit face and a shadowed one: lit
             // with their mean normal, both were lit alike. Each face is lit
             // from just outside it on its side, weighted by its share of the
             // normals (docs/quality.md, "Surfaces' extent inside their voxels").
             vec3 planeLight = planeW * cosN > 0.0
-                                  ? albedo / PI * E * (planeW * cosN) * visibility(light, mode, P, n, L, dist)
+                                  ? albedo / PI * E * (planeW * cosN) * visibility(light, mode, onSurface, P, n, L, dist)
                                   : vec3(0.0);
             radiance += planeLight;
             for (int a = 0; a < 3; ++a) {
@@ -139,7 +167,7 @@ void main() {
                 vec3 e = vec3(0.0);
                 e[a] = L[a] > 0.0 ? 1.0 : -1.0;
                 vec3 faceLight = (1.0 - planeW) * albedo / PI * E * cosine *
-                                 visibility(light, mode, centre + e * (0.5 * s), e, L, dist);
+                                 visibility(light, mode, surfaceFace(v, slot, a, e[a] > 0.0, s), centre + e * (0.5 * s), e, L, dist);
                 radiance += w * faceLight;
                 if (ownFace) face[a] += faceLight;
             }
@@ -148,7 +176,9 @@ void main() {
         for (int k = 0; k < 2; ++k) {
             float cosine = dot(sideN[k], L);
             if (cosine > 0.0)
-                side[k] += albedo / PI * E * cosine * visibility(light, mode, centre + sideN[k] * (0.5 * s), sideN[k], L, dist);
+                side[k] += albedo / PI * E * cosine *
+                           visibility(light, mode, surfaceFace(v, slot, axis, k == 0, s), centre + sideN[k] * (0.5 * s),
+                                      sideN[k], L, dist);
         }
     }
     imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, sideCodeAlpha(code)));

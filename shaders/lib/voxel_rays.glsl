@@ -11,6 +11,7 @@
 #define RAY_RADIANCE(c) imageLoad(outRadiance, c)
 #endif
 #include "lib/voxel_occupancy.glsl"
+#include "lib/voxel_extents.glsl"
 
 // A normal as the rays keep it per slot (BIND_BOUNCE_RAY_NORMALS): each
 // axis rounded to steps of 1/RAY_NORMAL_SCALE, offset to be unsigned.
@@ -78,17 +79,6 @@ bool passesInFront(ivec3 c, vec3 nc, vec3 p, vec3 d, vec3 inv, float t) {
     float ahead = dot(vec3(c) + 0.5 - (p + d * t), nc), along = dot(d, nc);
     if (ahead * along <= 0.0) return false;  // on the plane's far side, or not moving toward it
     return t + ahead / along > exitDistance(p, inv, vec3(c), 1.0);
-}
-
-// The box (voxel units) the voxel's surface covers, from its extents
-// (shared/voxel_data.h): per axis, from the lowest eighth reached to the highest.
-void extentBox(ivec3 c, uint bits, out vec3 lo, out vec3 hi) {
-    for (int k = 0; k < 3; ++k) {
-        uint m = (bits >> (VOXEL_EXTENT_STEPS * uint(k))) & 0xffu;
-        if (m == 0u) m = 0xffu;
-        lo[k] = float(c[k]) + float(findLSB(m)) / float(VOXEL_EXTENT_STEPS);
-        hi[k] = float(c[k]) + float(findMSB(m) + 1) / float(VOXEL_EXTENT_STEPS);
-    }
 }
 
 // Whether a ray from p along d, at p + d t inside occupied voxel c (normal

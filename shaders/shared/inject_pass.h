@@ -33,6 +33,7 @@ DVSGI_CONST(uint, BIND_INJECT_OUT_RADIANCE, 8);  // radiance volume (N^3): direc
 DVSGI_CONST(uint, BIND_INJECT_SIDES, 9);  // per-slot side light of two-sided voxels (lib/voxel_sides.glsl)
 DVSGI_CONST(uint, BIND_INJECT_RAY_OCCUPANCY, 10);  // RAY_OCCUPANCY: the rays' occupancy bits (lib/voxel_occupancy.glsl)
 DVSGI_CONST(uint, BIND_INJECT_SHADOW_GRADIENT, 11);  // the map's casters' depth gradients (shadow.frag)
+DVSGI_CONST(uint, BIND_INJECT_EXTENTS, 12);  // per-slot extents (voxel_data.h): where shadows are looked up
 
 DVSGI_END
 

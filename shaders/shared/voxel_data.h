@@ -53,11 +53,21 @@ DVSGI_CONST(float, FACES_BELOW_PLANE_SHARE, 0.99);
 // not triangles, leaves 0, read as the whole voxel.
 DVSGI_CONST(uint, VOXEL_EXTENT_STEPS, 8);
 DVSGI_CONST(uint, VOXEL_EXTENT_ALL, 0xffffffu);
+// Within this many eighths of an eighth's border, a box's end counts as on
+// it: a plane on a border then falls in the same eighth whichever way the
+// grid's origin rounded its coordinates (a clipmap level keeps the extents a
+// scroll computed from its old origin; the voxel light looks shadows up from
+// the extents: lib/voxel_extents.glsl).
+DVSGI_CONST(float, VOXEL_EXTENT_SNAP, 4e-3);
+DVSGI_FUNCTION float snapToExtentBorder(float f) {
+    float r = float(int(f + (f >= 0.0f ? 0.5f : -0.5f)));
+    return f - r < VOXEL_EXTENT_SNAP && r - f < VOXEL_EXTENT_SNAP ? r : f;
+}
 // One axis's bits for a box from lo to hi along it, in voxels from the
 // voxel's low face (clamped to the voxel: a box reaching past it covers it to
 // that face).
 DVSGI_FUNCTION uint voxelExtentAxisBits(float lo, float hi) {
-    float fa = lo * float(VOXEL_EXTENT_STEPS), fb = hi * float(VOXEL_EXTENT_STEPS);
+    float fa = snapToExtentBorder(lo * float(VOXEL_EXTENT_STEPS)), fb = snapToExtentBorder(hi * float(VOXEL_EXTENT_STEPS));
     int a = fa <= 0.0f ? 0 : (fa >= 7.0f ? 7 : int(fa));
     int b = fb <= 1.0f ? 0 : (fb >= 8.0f ? 7 : (float(int(fb)) == fb ? int(fb) - 1 : int(fb)));
     if (b < a) b = a;

@@ -38,7 +38,8 @@ InjectPass::InjectPass(const gpu::Context& ctx) : ctx_(ctx) {
                        {sh::BIND_INJECT_LIST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_INDEX, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs},
                        {sh::BIND_INJECT_OUT_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
-                       {sh::BIND_INJECT_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs}};
+                       {sh::BIND_INJECT_SIDES, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs},
+                       {sh::BIND_INJECT_EXTENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs}};
     layout.pushConstantBytes = sizeof(sh::VoxelLightPush);
     layout.pushConstantStages = cs;
     pipeline_ = gpu::Pipeline(ctx, gpu::Spirv(kInject), layout, "voxel inject");
@@ -53,6 +54,7 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .image(s.shadowMap, gpu::use::ShaderRead)
         .image(s.shadowGradient, gpu::use::ShaderRead)
         .buffer(v.index, gpu::use::BufferComputeRead)
+        .buffer(v.extents, gpu::use::BufferComputeRead)
         .image(v.direct, gpu::use::ComputeWrite)
         .image(v.radiance, gpu::use::ComputeWrite)  // occupied voxels only: the rest stays zero
         .image(v.sides, gpu::use::ComputeReadWrite)  // two-sided voxels only
@@ -74,6 +76,7 @@ void InjectPass::record(VkCommandBuffer cmd, gpu::Tracker& tracker, const VoxelV
         .storageBuffer(sh::BIND_INJECT_INDEX, v.index.handle())
         .storageImage(sh::BIND_INJECT_OUT_RADIANCE, v.radiance.view())
         .storageImage(sh::BIND_INJECT_SIDES, v.sides.view())
+        .storageBuffer(sh::BIND_INJECT_EXTENTS, v.extents.handle())
         .push(ctx_, cmd, pipeline);
     const sh::VoxelLightPush push{
         glm::uvec4(s.lightCount, settings.normalWeighted ? 1u : 0u, uint32_t(settings.occlusion),

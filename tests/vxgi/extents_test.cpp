@@ -80,6 +80,10 @@ TEST(VoxelExtentBits, EighthsReached) {
     EXPECT_EQ(sh::voxelExtentAxisBits(-1.0f, 2.0f), 0xffu);   // through the whole voxel
     EXPECT_EQ(sh::voxelExtentAxisBits(1.0f, 1.0f), 0x80u);    // on the top face: the last eighth
     EXPECT_EQ(sh::voxelExtentAxisBits(0.0f, 0.0f), 0x01u);    // on the bottom face: the first
+    // A plane on an eighth's border rounded either way: the eighth above it, as on the border itself.
+    EXPECT_EQ(sh::voxelExtentAxisBits(0.125f - 3e-5f, 0.125f - 3e-5f), 0x02u);
+    EXPECT_EQ(sh::voxelExtentAxisBits(0.125f + 3e-5f, 0.125f + 3e-5f), 0x02u);
+    EXPECT_EQ(sh::voxelExtentAxisBits(0.125f - 2e-3f, 0.125f - 2e-3f), 0x01u);  // clearly below it
 }
 
 }  // namespace

@@ -30,15 +30,19 @@ const glm::vec3 kAlbedo(0.6f, 0.5f, 0.4f);
 // World coordinate of voxel coordinate v (0 = the grid's low face).
 constexpr float world(float v) { return -kBox + v * kVoxel; }
 
-// The lit position of a floor voxel is its centre pushed half a voxel along
-// +Y, so its voxel y is exactly 10.0: the face between layers 9 and 10.
+// Where a floor voxel's light is occluded from. The voxel shadow rays start at
+// its centre pushed half a voxel along +Y, voxel y exactly 10.0: the face
+// between layers 9 and 10. The shadow map is looked up on the floor: at the
+// top of the eighth of the voxel its extents reach, voxel y 9.625 (the floor
+// at 9.6 lies in eighth 4).
 constexpr float kLitY = 10.0f;
+constexpr float kMapY = 9.625f;
 
-// --- A wall in the middle of column 12 (voxel x 12.5) from the floor to y = 0.1
-// (voxel 17.28, inside layer 17), lit by a sun travelling +X and down at 45°.
+// --- A wall in the middle of column 12 (voxel x 12.5) from the floor to
+// voxel y 17.9 (inside layer 17), lit by a sun travelling +X and down at 45°.
 constexpr int kWallColumn = 12;
 constexpr float kWallX = world(12.5f);
-constexpr float kWallTop = 0.1f;
+constexpr float kWallTop = world(17.9f);
 const glm::vec3 kSunDir = glm::normalize(glm::vec3(1.0f, -1.0f, 0.0f));
 
 // --- Overhead sun and two horizontal shelves in the middle of layers 13 and
@@ -167,10 +171,13 @@ TEST_F(VoxelOcclusion, WithoutOcclusionEveryFloorVoxelGetsTheFullSun) {
     EXPECT_EQ(count, 20 * 21);
 }
 
-// The shadow map holds the wall's true top (voxel y 17.28). The ray from the
-// lit point of column x (voxel (x + 0.5, 10)) toward the sun meets the wall's
-// plane (x = 12.5) at y = x - 2: below the top for x <= 19 (column 19 clears it
-// by 0.28 voxel, column 20 passes 0.72 voxel above).
+// The shadow map holds the wall's true top (voxel y 17.9). The ray from the
+// lookup point of column x (voxel (x + 0.5, 9.625)) toward the sun meets the
+// wall's plane (x = 12.5) at y = x - 2.375: below the top for x <= 20 (column
+// 20 by 0.275 voxel, 2.8 of the map's texels less its normal offset of 1.5;
+// column 21 passes 0.725 voxel above). Looked up half a voxel above the
+// centre (y 10), as before the lookup moved onto the surface, column 20 was
+// lit: every shadow edge moved toward the light by that height.
 TEST_F(VoxelOcclusion, ShadowMapShadowEndsWhereTheWallTopSays) {
     const FloorResult f = renderFloor(wallScene(), settings(vxgi::Occlusion::ShadowMap));
     const float topY = (kWallTop + kBox) / kVoxel;
@@ -179,7 +186,7 @@ TEST_F(VoxelOcclusion, ShadowMapShadowEndsWhereTheWallTopSays) {
         for (int x = 0; x < int(kN); ++x) {
             if (!awayFromFloorEdges(z) || !onFloor(x) || x == kWallColumn) continue;
             const glm::vec4 got = f.radiance.at(x, kFloorLayer, z);
-            const bool behind = x > kWallColumn && float(x) - 2.0f < topY;
+            const bool behind = x > kWallColumn && float(x) + 0.5f + (kMapY - (float(kWallColumn) + 0.5f)) < topY;
             if (behind) {
                 expectDark(got, "shadow map", x, z);
                 ++dark;
@@ -188,8 +195,8 @@ TEST_F(VoxelOcclusion, ShadowMapShadowEndsWhereTheWallTopSays) {
                 ++lit;
             }
         }
-    EXPECT_EQ(dark, 7 * 20);  // columns 13..19
-    EXPECT_EQ(lit, 16 * 20);
+    EXPECT_EQ(dark, 8 * 20);  // columns 13..20
+    EXPECT_EQ(lit, 15 * 20);
 }
 
 // The hard raycast sees the voxelized wall, column 12 from layer 9 to 17 (top
