@@ -130,9 +130,14 @@ def check(bvh, E, toward, path, opts):
         a = int(np.argmax(np.abs(n)))
         cls.append(2 * a + int(n[a] < 0))
     held, traced, cls = map(np.array, (held, traced, cls))
+    def cell(c):  # a class the sun does not reach (traced 0) has no ratio
+        t = traced[cls == c].sum()
+        if t <= 1e-9 * traced.sum():
+            return " – |"
+        return " %.3f (%.0f %%) |" % (held[cls == c].sum() / t, 100.0 * t / traced.sum())
+
     print("| %s (voxel %.4f m) | %d | %.4f |" % (path, size, len(held), held.sum() / traced.sum()) +
-          "".join(" %.3f (%.0f %%) |" % (held[cls == c].sum() / max(traced[cls == c].sum(), 1e-30),
-                                         100.0 * traced[cls == c].sum() / traced.sum()) for c in range(6)))
+          "".join(cell(c) for c in range(6)))
 
 
 def main():

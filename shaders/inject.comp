@@ -70,14 +70,15 @@ float visibility(GpuLight light, uint mode, vec3 Pmap, vec3 Pray, vec3 n, vec3 L
 
 // Where a voxel's surface facing +axis a (or -a) lies, for its shadow
 // lookups: the middle of the box its extents cover, on that box's face on
-// that side, at most an eighth of a voxel in front of the surface. Looked up
+// that side: for one plane along the axis at most an eighth of a voxel in
+// front of it, and never behind a surface the voxel holds. Looked up
 // half a voxel off the centre, a floor's voxel was lit from up to a voxel
 // above the floor, and every shadow edge moved that height times the tangent
 // of the light's angle toward the light: the sun's patch in a room lit
 // through a window lay a voxel nearer the window, and the window's wall saw
 // it 6-9 % too bright (docs/quality.md, "Where a voxel's light is looked
-// up"). Without extents (the pv voxelizer's, a clipmap's scrolled voxels)
-// the box is the voxel, and this is its face.
+// up"). Without extents (the pv voxelizer's) the box is the voxel, and this
+// is its face.
 vec3 surfaceFace(ivec3 v, uint slot, int a, bool plus, float s) {
     vec3 lo, hi;
     extentBox(v, voxelExtents[slot], lo, hi);
@@ -112,7 +113,8 @@ void main() {
     vec3 P = centre + n * (0.5 * s);
     vec3 onSurface = alongAnAxis(n) ? surfaceFace(v, slot, nAxis, n[nAxis] > 0.0, s) : P;
     // A two-sided voxel's sides (+axis, -axis) are lit as faces with those
-    // normals, from just outside the voxel on their side: a thin wall's
+    // normals, each looked up on its side's face of the extents' box (voxel
+    // raycasts: from just outside the voxel on that side): a thin wall's
     // shadowed face stays dark however the wall's sunlit face is weighted.
     uint code = sideCode(pos, neg);
     int axis = twoSidedAxis(code);
@@ -152,8 +154,9 @@ void main() {
         } else {
             // A block's edge voxel holds a sunlit face and a shadowed one: lit
             // with their mean normal, both were lit alike. Each face is lit
-            // from just outside it on its side, weighted by its share of the
-            // normals (docs/quality.md, "Surfaces' extent inside their voxels").
+            // on its side's face of the extents' box (voxel raycasts: from
+            // just outside the voxel on that side), weighted by its share of
+            // the normals (docs/quality.md, "Surfaces' extent inside their voxels").
             vec3 planeLight = planeW * cosN > 0.0
                                   ? albedo / PI * E * (planeW * cosN) * visibility(light, mode, onSurface, P, n, L, dist)
                                   : vec3(0.0);

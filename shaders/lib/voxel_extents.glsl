@@ -1,6 +1,8 @@
 // The box a voxel's surface covers, from its extents (shared/voxel_data.h):
 // per axis, from the lowest eighth reached to the highest. Needs the
 // extents block `voxelExtents` (VOXEL_EXTENTS_BLOCK).
+#ifndef DVSGI_LIB_VOXEL_EXTENTS_GLSL
+#define DVSGI_LIB_VOXEL_EXTENTS_GLSL
 
 // The box in voxel units (grid coordinates); a voxel with no bits along an
 // axis (the pv voxelizer's) covers that axis whole.
@@ -12,3 +14,5 @@ void extentBox(ivec3 c, uint bits, out vec3 lo, out vec3 hi) {
         hi[k] = float(c[k]) + float(findMSB(m) + 1) / float(VOXEL_EXTENT_STEPS);
     }
 }
+
+#endif

@@ -45,7 +45,9 @@ DVSGI_CONST(uint, VOXEL_CHANNELS, 16);
 // (--edge-voxels faces; lib/voxel_attributes.glsl, voxelShowsFaces).
 DVSGI_CONST(float, FACES_BELOW_PLANE_SHARE, 0.99);
 
-// The part of its voxel a surface covers (--edge-voxels faces). Per slot, one
+// The part of its voxel a surface covers (where the voxel light looks a
+// floor's or a wall's shadow map up; the rays at thin walls' ends; --edge-voxels
+// faces). Per slot, one
 // uint in the extents buffer (VOXEL_EXTENTS_BLOCK): per axis a (bits 8a to
 // 8a + 7) bit k is set when a triangle that gave the voxel a sample has its
 // bounding box reach [k/8, (k+1)/8) of the voxel along a. The compute and
@@ -55,11 +57,14 @@ DVSGI_CONST(uint, VOXEL_EXTENT_STEPS, 8);
 DVSGI_CONST(uint, VOXEL_EXTENT_ALL, 0xffffffu);
 // Within this many eighths of an eighth's border, a box's end counts as on
 // it: a plane on a border then falls in the same eighth whichever way the
-// grid's origin rounded its coordinates (a clipmap level keeps the extents a
-// scroll computed from its old origin; the voxel light looks shadows up from
-// the extents: lib/voxel_extents.glsl).
+// grid's origin rounded its coordinates (a clipmap level's kept voxels keep
+// the extents their voxelization under the level's old origin gave; the voxel
+// light looks shadows up from the extents: lib/voxel_extents.glsl). f is in
+// eighths; the bits clamp to [0, 8] anyway, and clamping first keeps int()
+// in range.
 DVSGI_CONST(float, VOXEL_EXTENT_SNAP, 4e-3);
 DVSGI_FUNCTION float snapToExtentBorder(float f) {
+    f = f < -1.0f ? -1.0f : (f > 9.0f ? 9.0f : f);
     float r = float(int(f + (f >= 0.0f ? 0.5f : -0.5f)));
     return f - r < VOXEL_EXTENT_SNAP && r - f < VOXEL_EXTENT_SNAP ? r : f;
 }

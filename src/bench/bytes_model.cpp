@@ -97,8 +97,9 @@ std::vector<PassTraffic> passTraffic(const ModelInputs& in) {
     out.push_back({"shadow maps", geometry * in.shadowViews,
                    uint64_t(in.shadowMapSize) * in.shadowMapSize * (kDepthBytes + kShadowGradientBytes) * in.shadowViews});
     if (in.voxels > 0) {
-        // Direct light into the slot and the radiance volume.
-        out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes),
+        // Direct light into the slot and the radiance volume; the extents
+        // place a floor's or a wall's shadow lookup on its surface.
+        out.push_back({"voxel direct light", occupied * (kListEntryBytes + kAttributeBytes + kExtentBytes),
                        occupied * 2 * kVoxelLightBytes});
         // Rays read no filtered light: with a ray bounce after it, the voxel
         // light is not filtered until that bounce has run.

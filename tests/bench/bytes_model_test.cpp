@@ -50,8 +50,8 @@ TEST(BytesModel, HandComputedCase) {
     expectPass(p, "voxelize dynamic", 500 + 100 * 4, 100 * (64 + 4 + 4 + 4));
     // A D32 depth and an RG16F caster gradient per texel.
     expectPass(p, "shadow maps", 1500, 512 * 512 * (4 + 4));
-    // Direct light into the slot and the radiance volume.
-    expectPass(p, "voxel direct light", 1000 * (4 + 64), 1000 * 16);
+    // List entry, attributes and extents read; direct light into the slot and the radiance volume.
+    expectPass(p, "voxel direct light", 1000 * (4 + 64 + 4), 1000 * 16);
     // Directional levels 16^3 .. 1^3 (5 levels), RGBA16F, 6 volumes: reads
     // the 1000 listed voxels' entries and radiance + levels 16^3..2^3, writes
     // all five levels.

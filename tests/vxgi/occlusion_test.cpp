@@ -174,8 +174,9 @@ TEST_F(VoxelOcclusion, WithoutOcclusionEveryFloorVoxelGetsTheFullSun) {
 // The shadow map holds the wall's true top (voxel y 17.9). The ray from the
 // lookup point of column x (voxel (x + 0.5, 9.625)) toward the sun meets the
 // wall's plane (x = 12.5) at y = x - 2.375: below the top for x <= 20 (column
-// 20 by 0.275 voxel, 2.8 of the map's texels less its normal offset of 1.5;
-// column 21 passes 0.725 voxel above). Looked up half a voxel above the
+// 20 by 0.275 voxel, 21 mm: the map spans the scene's bounds, 2.9 m over 512
+// texels, so 2.7 texels across the light less the 1.5-texel normal offset's
+// 1.06 across it; column 21 passes 0.725 voxel above). Looked up half a voxel above the
 // centre (y 10), as before the lookup moved onto the surface, column 20 was
 // lit: every shadow edge moved toward the light by that height.
 TEST_F(VoxelOcclusion, ShadowMapShadowEndsWhereTheWallTopSays) {
