@@ -3,13 +3,15 @@ tracer (Sponza, Sibenik): how much of the sun each floor's or wall's voxel is li
 
     dvsgi render SCENE.gltf --bounces 0 --voxel-dump DUMP.npy ...
     blender -b --factory-startup -P scripts/voxel-sunlight-check.py -- SCENE.gltf DUMP.npy [DUMP2.npy ...]
-            [--voxels 4000] [--points 16] [--seed 1]
+            [--voxels 4000] [--points 16] [--seed 1] [--others 0|1]
 
 For a sample of the one-sided voxels whose normal lies along an axis (within about 11 degrees) and whose
 albedo is not black, finds points of the surface each holds, as seen from its front (rays cast along
 -normal from two voxels in front, kept where they land inside the voxel), and traces there the scene's
 first directional light: E cos / pi where a ray toward the sun (Blender's BVH over every mesh, alpha-masked
 ones as opaque) meets nothing, else 0. The voxel's share is its direct light over its albedo (green).
+--others 1 also samples the voxels whose normal lies off the axes (edges, corners, tilted and curved
+surfaces), as a seventh class.
 Prints, per dump, the voxels' sum over the traced one, in all and per class of normal with each class's
 share of the traced light. The albedo divides out, so textures do not matter; cut-outs do (the rays
 here see leaves and chains whole, which the renderer's alpha test does not), so compare dumps with each
@@ -36,7 +38,7 @@ def fail(msg):
 
 def options():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    opts = {"--voxels": 4000, "--points": 16, "--seed": 1}
+    opts = {"--voxels": 4000, "--points": 16, "--seed": 1, "--others": 0}
     files = []
     i = 0
     while i < len(argv):
@@ -99,8 +101,8 @@ def check(bvh, E, toward, path, opts):
     size = float(np.polyfit(grid[:, 0] + 0.5, centre[:, 0], 1)[0])
     albedo, direct = d[:, 9:12], d[:, 12:15]
     length = np.linalg.norm(normal, axis=1)
-    usable = np.flatnonzero((d[:, 18] == 0) & (length > 0.5) & (albedo[:, 1] > 0.05) &
-                            (np.abs(normal).max(axis=1) > 0.98 * np.maximum(length, 1e-9)))
+    along = np.abs(normal).max(axis=1) > 0.98 * np.maximum(length, 1e-9)
+    usable = np.flatnonzero((d[:, 18] == 0) & (length > 0.5) & (albedo[:, 1] > 0.05) & (along | (opts["--others"] != 0)))
     rng = np.random.default_rng(opts["--seed"])
     chosen = rng.choice(usable, min(opts["--voxels"], len(usable)), replace=False)
     sun_b = to_blender(toward)
@@ -128,7 +130,7 @@ def check(bvh, E, toward, path, opts):
         held.append(direct[i, 1] / albedo[i, 1])
         traced.append(np.mean(values))
         a = int(np.argmax(np.abs(n)))
-        cls.append(2 * a + int(n[a] < 0))
+        cls.append(2 * a + int(n[a] < 0) if along[i] else 6)
     held, traced, cls = map(np.array, (held, traced, cls))
     def cell(c):  # a class the sun does not reach (traced 0) has no ratio
         t = traced[cls == c].sum()
@@ -137,7 +139,7 @@ def check(bvh, E, toward, path, opts):
         return " %.3f (%.0f %%) |" % (held[cls == c].sum() / t, 100.0 * t / traced.sum())
 
     print("| %s (voxel %.4f m) | %d | %.4f |" % (path, size, len(held), held.sum() / traced.sum()) +
-          "".join(cell(c) for c in range(6)))
+          "".join(cell(c) for c in range(7 if opts["--others"] else 6)))
 
 
 def main():
@@ -145,8 +147,8 @@ def main():
     E, toward = sun(scene)
     bvh = scene_bvh(scene)
     print("<!-- scripts/voxel-sunlight-check.py %s; toward the sun %s -->" % (scene, np.round(toward, 3)))
-    print("| dump | voxels | sunlight: voxels / traced | +x | -x | +y | -y | +z | -z |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| dump | voxels | sunlight: voxels / traced | +x | -x | +y | -y | +z | -z |" + (" others |" if opts["--others"] else ""))
+    print("|---|---|---|---|---|---|---|---|---|" + ("---|" if opts["--others"] else ""))
     for path in dumps:
         check(bvh, E, toward, path, opts)
 
