@@ -106,7 +106,7 @@ vec3 bounceNormal(uint slot, uint code, out int axis, out int strong) {
     vec3 n = voxelNormal(slot);
     if (dot(n, n) < 0.5) {  // opposite faces cancelled: use the strongest weight's axis
         vec3 m = max(pos, neg);
-        int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+        int a = largestAxis(m);
         n = vec3(0.0);
         n[a] = pos[a] >= neg[a] ? 1.0 : -1.0;
     }

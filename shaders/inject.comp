@@ -77,14 +77,12 @@ float visibility(GpuLight light, uint mode, vec3 Pmap, vec3 Pray, vec3 n, vec3 L
 // of the light's angle toward the light: the sun's patch in a room lit
 // through a window lay a voxel nearer the window, and the window's wall saw
 // it 6-9 % too bright (docs/quality.md, "Where a voxel's light is looked
-// up"). Without extents (the pv voxelizer's) the box is the voxel, and this
-// is its face.
-vec3 surfaceFace(ivec3 v, uint slot, int a, bool plus, float s) {
-    vec3 lo, hi;
-    extentBox(v, voxelExtents[slot], lo, hi);
+// up"). lo, hi: the box (extentBox); without extents (the pv voxelizer's)
+// it is the voxel, and this is its face.
+vec3 surfaceFace(vec3 lo, vec3 hi, int a, bool plus) {
     vec3 q = 0.5 * (lo + hi);
     q[a] = plus ? hi[a] : lo[a];
-    return grid.originSize.xyz + q * s;
+    return grid.originSize.xyz + q * grid.originSize.w;
 }
 
 void main() {
@@ -109,9 +107,11 @@ void main() {
     // where planes cross voxels the surface lies there on average; taken half
     // a voxel nearer a point light, cornell-lights' first two bounces came out
     // 1.0 % and 1.2 % too bright at 64^3 (docs/quality.md).
-    int nAxis = abs(n.x) >= abs(n.y) && abs(n.x) >= abs(n.z) ? 0 : (abs(n.y) >= abs(n.z) ? 1 : 2);
+    vec3 boxLo, boxHi;
+    extentBox(v, voxelExtents[slot], boxLo, boxHi);
+    int nAxis = largestAxis(abs(n));
     vec3 P = centre + n * (0.5 * s);
-    vec3 onSurface = alongAnAxis(n) ? surfaceFace(v, slot, nAxis, n[nAxis] > 0.0, s) : P;
+    vec3 onSurface = alongAnAxis(n) ? surfaceFace(boxLo, boxHi, nAxis, n[nAxis] > 0.0) : P;
     // A two-sided voxel's sides (+axis, -axis) are lit as faces with those
     // normals, each looked up on its side's face of the extents' box (voxel
     // raycasts: from just outside the voxel on that side): a thin wall's
@@ -170,7 +170,7 @@ void main() {
                 vec3 e = vec3(0.0);
                 e[a] = L[a] > 0.0 ? 1.0 : -1.0;
                 vec3 faceLight = (1.0 - planeW) * albedo / PI * E * cosine *
-                                 visibility(light, mode, surfaceFace(v, slot, a, e[a] > 0.0, s), centre + e * (0.5 * s), e, L, dist);
+                                 visibility(light, mode, surfaceFace(boxLo, boxHi, a, e[a] > 0.0), centre + e * (0.5 * s), e, L, dist);
                 radiance += w * faceLight;
                 if (ownFace) face[a] += faceLight;
             }
@@ -180,7 +180,7 @@ void main() {
             float cosine = dot(sideN[k], L);
             if (cosine > 0.0)
                 side[k] += albedo / PI * E * cosine *
-                           visibility(light, mode, surfaceFace(v, slot, axis, k == 0, s), centre + sideN[k] * (0.5 * s),
+                           visibility(light, mode, surfaceFace(boxLo, boxHi, axis, k == 0), centre + sideN[k] * (0.5 * s),
                                       sideN[k], L, dist);
         }
     }

@@ -93,8 +93,7 @@ bool missesExtents(ivec3 c, vec3 nc, uint slot, vec3 p, vec3 d, vec3 inv, float 
     extentBox(c, bits, lo, hi);
     float tExit = exitDistance(p, inv, vec3(c), 1.0);
     if (alongAnAxis(nc)) {
-        vec3 m = abs(nc);
-        int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+        int a = largestAxis(abs(nc));
         float tp = abs(d[a]) > 1e-7 ? (float(c[a]) + 0.5 - p[a]) / d[a] : -1.0;
         float tq = tp >= t && tp <= tExit ? tp : t;
         vec3 q = p + d * tq;
@@ -376,7 +375,7 @@ bool sheetAcross(ivec3 c, vec3 n, int a, int N, out uint slot, out vec4 r, out u
 // n at least RAY_SHEET_GAP in front of p.
 float sheetAhead(vec3 p, vec3 n, float start, int N, out int a) {
     vec3 m = abs(n);
-    a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    a = largestAxis(m);
     if (m[a] < 0.7) return -1.0;
     int dir = n[a] > 0.0 ? 1 : -1;
     ivec3 c = ivec3(floor(p));

@@ -88,6 +88,8 @@ DVSGI_FUNCTION uint rayOccupancyOffset(uint n, uint level) {
 // an edge, a corner or a tilted surface's staircase is no plane its voxel holds.
 DVSGI_CONST(float, RAY_PLANE_AXIS_COS, 0.98);
 DVSGI_FUNCTION float largestComponent(vec3 m) { return m.x > m.y ? (m.x > m.z ? m.x : m.z) : (m.y > m.z ? m.y : m.z); }
+// The axis of m's largest component (ties: x before y before z).
+DVSGI_FUNCTION int largestAxis(vec3 m) { return m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2); }
 DVSGI_FUNCTION bool alongAnAxis(vec3 n) { return largestComponent(abs(n)) >= RAY_PLANE_AXIS_COS; }
 // Where a voxel's rays (bounce.comp) start, from its centre along its normal
 // n: VOXEL_RAY_START voxels along n's largest axis, just past the voxel's

@@ -120,8 +120,7 @@ inline bool rayPassesBeside(glm::ivec3 c, glm::vec3 nc, uint32_t bits, glm::vec3
         hi[k] = float(c[k]) + float(last + 1) / 8.0f;
     }
     if (shader::alongAnAxis(nc)) {
-        const glm::vec3 m = glm::abs(nc);
-        const int a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+        const int a = shader::largestAxis(glm::abs(nc));
         const float tp = std::fabs(d[a]) > 1e-7f ? (float(c[a]) + 0.5f - p[a]) / d[a] : -1.0f;
         const glm::vec3 q = p + d * (tp >= t && tp <= tExit ? tp : t);
         for (int k = 0; k < 3; ++k)
@@ -300,7 +299,7 @@ template <typename NormalAt>
 float sheetAhead(const Rgba16Volume& radiance, NormalAt&& normalAt, const EdgeModel& edges, glm::vec3 p, glm::vec3 n,
                  float start, int& a) {
     const glm::vec3 m = glm::abs(n);
-    a = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+    a = shader::largestAxis(m);
     if (m[a] < 0.7f) return -1.0f;
     const int dir = n[a] > 0.0f ? 1 : -1;
     glm::ivec3 c = glm::ivec3(glm::floor(p));
