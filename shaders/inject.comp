@@ -131,6 +131,20 @@ void main() {
     // An edge or corner voxel also keeps each axis face's light apart, for
     // rays to see the faces that turn toward them (lib/voxel_rays.glsl).
     bool faces = edges && showsFaces(pos, neg, planeW);
+    // An edge or corner of faces along the axes, in the default voxel light
+    // (Lambert, --edge-voxels whole): lit face by face, each face weighted by
+    // its share of the fragments, and shown as the lesser of that and Lambert
+    // with the mean normal, light by light. Where both faces face the light
+    // (a room's inside corner) the faces' mean is the surfaces' light; the
+    // mean normal gave up to sqrt(2) of it, and cornell-lights after 32
+    // bounces came out above its reference. Where only one does (a sill's
+    // edge: its sunlit top, its wall's face turned away) a voxel shown the
+    // same from every side cannot be right from both; it keeps the lower, as
+    // a two-sided voxel shows its darker side: lit by its faces, the room
+    // lit through a window saw its sill glow 2-3 % (docs/quality.md, "Edge
+    // voxels of axis faces").
+    bool axisFaces = !edges && pc.flags.y == 0u && code == SIDE_ONE &&
+                     voxelPlaneShare(slot, pos, neg) < AXIS_FACES_BELOW_PLANE_SHARE;
     vec3 face[3] = vec3[3](radiance, radiance, radiance);
     vec3 faceSign = mix(vec3(-1.0), vec3(1.0), greaterThanEqual(pos, neg));
     for (uint i = 0u; i < pc.flags.x; ++i) {
@@ -144,11 +158,23 @@ void main() {
         // Patches have no shadow maps; their rays stop short of the emitter's own voxels.
         if (area && mode == OCCLUSION_SHADOW_MAP) mode = OCCLUSION_RAYCAST_HARD;
         if (area) dist -= 2.0 * s / max(abs(dot(light.direction.xyz, L)), 0.2);
-        // Eq. 5 generalized to signed weights: sum over axes of the weight of
-        // the normals facing the light along that axis times the cosine there.
-        // For a single normal it is exactly W_x D_x + W_y D_y + W_z D_z.
         float cosN = max(dot(n, L), 0.0);
-        if (!edges) {
+        if (axisFaces) {
+            float byFaces = 0.0;
+            for (int a = 0; a < 3; ++a) {
+                float w = L[a] > 0.0 ? pos[a] : neg[a];
+                if (w <= 0.0 || L[a] == 0.0) continue;
+                vec3 e = vec3(0.0);
+                e[a] = sign(L[a]);
+                byFaces += w * abs(L[a]) *
+                           visibility(light, mode, surfaceFace(boxLo, boxHi, a, e[a] > 0.0), centre + e * (0.5 * s), e, L, dist);
+            }
+            float byNormal = cosN > 0.0 ? cosN * visibility(light, mode, onSurface, P, n, L, dist) : 0.0;
+            radiance += albedo / PI * E * min(byFaces, byNormal);
+        } else if (!edges) {
+            // Eq. 5 generalized to signed weights: sum over axes of the weight of
+            // the normals facing the light along that axis times the cosine there.
+            // For a single normal it is exactly W_x D_x + W_y D_y + W_z D_z.
             float att = pc.flags.y != 0u ? dot(pos, max(L, 0.0)) + dot(neg, max(-L, 0.0)) : cosN;
             if (att > 0.0) radiance += albedo / PI * E * att * visibility(light, mode, onSurface, P, n, L, dist);
         } else {

@@ -44,6 +44,11 @@ DVSGI_CONST(uint, VOXEL_CHANNELS, 16);
 // A one-sided voxel less than this share one plane shows its faces
 // (--edge-voxels faces; lib/voxel_attributes.glsl, voxelShowsFaces).
 DVSGI_CONST(float, FACES_BELOW_PLANE_SHARE, 0.99);
+// A one-sided voxel whose fragments all lie along the axes (plane share below
+// this: an edge or corner of axis faces) is lit face by face in the default
+// voxel light too, and shows the lesser of that and Lambert with its mean
+// normal (inject.comp, "axis edges").
+DVSGI_CONST(float, AXIS_FACES_BELOW_PLANE_SHARE, 0.05);
 
 // The part of its voxel a surface covers (where the voxel light looks a
 // floor's or a wall's shadow map up; the rays at thin walls' ends; --edge-voxels

@@ -1,8 +1,9 @@
 // Direct light per voxel with --edge-voxels faces (inject.comp): the share of
 // a voxel that is one plane lit with Lambert, the rest face by face along the
 // axes, and an edge voxel's faces kept apart for the rays (lib/voxel_rays.glsl,
-// facesSeen), against a CPU evaluation in double; and the analytic case of a
-// box's edge lit head on along one face.
+// facesSeen), against a CPU evaluation in double; the default's edges of axis
+// faces (the lesser of face by face and Lambert with the mean normal); and the
+// analytic cases of an edge lit head on along one face and along both.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -81,6 +82,53 @@ EdgeLight referenceEdgeLight(const Channels& c, const dvec3& P, const std::vecto
 
 class InjectEdges : public GpuTest {};
 
+TEST_F(InjectEdges, DefaultLightsAxisEdgesByTheLesserOfFacesAndMeanNormal) {
+    const SyntheticGrid sg(makeEdgeVoxels(5));
+    const auto& [voxels, accum, volumes, pass] = sg;
+    const vxgi::GridSpec g = grid();
+    for (const LightCase& lc : lightCases()) {
+        const Rgba16Volume direct = inject(volumes, pass, lc.lights, false);
+        int checked = 0, axisEdges = 0, lowered = 0, failed = 0;
+        double worst = 0.0;
+        for (int z = 0; z < int(kN); ++z)
+            for (int y = 0; y < int(kN); ++y)
+                for (int x = 0; x < int(kN); ++x) {
+                    if (voxels[voxelIndex(kN, x, y, z)].normals.empty()) continue;
+                    const Channels c = channels(accum, x, y, z);
+                    const dvec3 P = dvec3(g.origin) + (dvec3(x, y, z) + 0.5) * double(g.voxelSize);
+                    dvec3 want = c.emission;
+                    bool axisFaces = false, ambiguous = false, below = false;
+                    for (const scene::PlacedLight& pl : lc.lights) {
+                        dvec3 L;
+                        const dvec3 E = irradiance(pl, P, L);
+                        const double att = lambertAttenuation(c, L, axisFaces, ambiguous);
+                        below = below || att < std::max(glm::dot(voxelNormal(c), L), 0.0) - 1e-3;
+                        want += c.albedo / kPi * E * att;
+                    }
+                    if (ambiguous) continue;
+                    ++checked;
+                    axisEdges += axisFaces;
+                    lowered += below;
+                    const glm::vec4 got = direct.at(x, y, z);
+                    bool ok = true;
+                    for (int ch = 0; ch < 3; ++ch) {
+                        const double err = std::abs(double(got[ch]) - want[ch]);
+                        ok = ok && err <= 1.5e-3 * std::abs(want[ch]) + 2e-5;
+                        if (want[ch] > 1e-3) worst = std::max(worst, err / want[ch]);
+                    }
+                    if (!ok && failed++ < 5)
+                        ADD_FAILURE() << lc.name << ": voxel (" << x << "," << y << "," << z << "), axis faces "
+                                      << axisFaces << ": GPU " << got.r << " " << got.g << " " << got.b << ", CPU "
+                                      << want.r << " " << want.g << " " << want.b;
+                }
+        std::printf("  %-12s %5d voxels (%d edges of axis faces, %d below Lambert), worst error %.2e\n",
+                    lc.name.c_str(), checked, axisEdges, lowered, worst);
+        EXPECT_EQ(failed, 0);
+        EXPECT_GT(axisEdges, 5000) << "the synthetic voxels should hold edges and corners of axis faces";
+        EXPECT_GT(lowered, 1000) << "and some the faces light less than the mean normal";
+    }
+}
+
 // fp16 (direct light): 1.5e-3 of the value, as InjectDirect; RGB9E5 (the
 // faces' light): 2e-3 of the largest component, as the side light.
 TEST_F(InjectEdges, EdgeVoxelsAreLitFaceByFace) {
@@ -140,9 +188,8 @@ TEST_F(InjectEdges, EdgeVoxelsAreLitFaceByFace) {
 
 // A box's edge: a voxel of one +x fragment and one +y fragment, lit head on
 // along +x by a sun. Its +x face gets E rho / pi; its +y face, edge on, none;
-// so the voxel as a whole holds half of E rho / pi. Lit as a plane with the
-// mean normal (+x +y)/sqrt(2), as --edge-voxels whole does, it holds
-// 1/sqrt(2) of it.
+// so the voxel as a whole holds half of E rho / pi, with either --edge-voxels.
+// Lit as a plane with the mean normal (+x +y)/sqrt(2) it held 1/sqrt(2) of it.
 TEST_F(InjectEdges, BoxEdgeLitAlongOneFace) {
     std::vector<SyntheticVoxel> voxels(size_t(kN) * kN * kN);
     SyntheticVoxel& edge = voxels[voxelIndex(kN, 5, 6, 7)];
@@ -156,7 +203,7 @@ TEST_F(InjectEdges, BoxEdgeLitAlongOneFace) {
     const glm::vec3 colour = sunAlongX.light.color * edge.albedo;
     for (bool edgeFaces : {true, false}) {
         const glm::vec4 got = inject(volumes, pass, {sunAlongX}, false, false, edgeFaces).at(5, 6, 7);
-        const double share = edgeFaces ? 0.5 : 1.0 / std::sqrt(2.0);
+        const double share = 0.5;
         for (int ch = 0; ch < 3; ++ch)
             EXPECT_NEAR(got[ch], full * share * colour[ch], 1.5e-3 * full * share * colour[ch])
                 << (edgeFaces ? "faces" : "whole") << " channel " << ch;
@@ -167,6 +214,29 @@ TEST_F(InjectEdges, BoxEdgeLitAlongOneFace) {
             EXPECT_NEAR(faceX[ch], full * colour[ch], 2e-3 * full) << "the +x face, head on";
             EXPECT_EQ(faceY[ch], 0.0f) << "the +y face, edge on";
         }
+    }
+}
+
+// The same voxel lit along (+x +y)/sqrt(2): each face gets cos 45 degrees,
+// so the voxel holds E rho / pi / sqrt(2); with the mean normal it got the
+// whole E rho / pi, the sqrt(2) too much that made cornell-lights' corners
+// too bright (docs/quality.md, "Edge voxels of axis faces").
+TEST_F(InjectEdges, EdgeLitAlongBothFacesHoldsTheirMeanCosine) {
+    std::vector<SyntheticVoxel> voxels(size_t(kN) * kN * kN);
+    SyntheticVoxel& edge = voxels[voxelIndex(kN, 5, 6, 7)];
+    edge.albedo = glm::vec3(0.5f, 0.25f, 1.0f);
+    edge.normals = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
+    const SyntheticGrid sg(voxels);
+    const auto& [synthetic, accum, volumes, pass] = sg;
+    scene::PlacedLight sunAlongBoth = sun();
+    sunAlongBoth.direction = glm::normalize(glm::vec3(-1.0f, -1.0f, 0.0f));
+    const double want = 3.0 / kPi / std::sqrt(2.0);
+    const glm::vec3 colour = sunAlongBoth.light.color * edge.albedo;
+    for (bool edgeFaces : {true, false}) {
+        const glm::vec4 got = inject(volumes, pass, {sunAlongBoth}, false, false, edgeFaces).at(5, 6, 7);
+        for (int ch = 0; ch < 3; ++ch)
+            EXPECT_NEAR(got[ch], want * colour[ch], 1.5e-3 * want * colour[ch])
+                << (edgeFaces ? "faces" : "whole") << " channel " << ch;
     }
 }
 

@@ -121,6 +121,25 @@ inline uint32_t sideCode(const Channels& c) {
     return count == 0 ? sh::SIDE_ONE : (count > 1 ? sh::SIDE_SEVERAL : uint32_t(axis + 1));
 }
 
+// The default voxel light's attenuation toward unit L (inject.comp, Lambert):
+// N.L with the mean normal, but a one-sided voxel of faces along the axes only
+// (plane share below AXIS_FACES_BELOW_PLANE_SHARE) gets the lesser of that and
+// its faces' cosines weighted by their shares. `axisFaces`: the voxel is such
+// an edge; `ambiguous`: float rounding could take the other branch than double.
+inline double lambertAttenuation(const Channels& c, const dvec3& L, bool& axisFaces, bool& ambiguous) {
+    const double share = planeShareOf(c.pos, c.neg, c.first);
+    const double lp = glm::length(glm::sqrt(c.pos) - glm::sqrt(c.neg)), la = glm::length(c.pos - c.neg);
+    axisFaces = sideCode(c) == sh::SIDE_ONE && share < double(sh::AXIS_FACES_BELOW_PLANE_SHARE);
+    ambiguous = std::abs(share - double(sh::AXIS_FACES_BELOW_PLANE_SHARE)) < 1e-3 || std::abs(lp - la - 1e-3) < 1e-4;
+    for (int a = 0; a < 3; ++a)
+        ambiguous = ambiguous || std::abs(std::min(c.pos[a], c.neg[a]) - double(sh::TWO_SIDED_MIN_WEIGHT)) < 1e-5;
+    const double lambert = std::max(glm::dot(voxelNormal(c), L), 0.0);
+    if (!axisFaces) return lambert;
+    double faces = 0.0;
+    for (int a = 0; a < 3; ++a) faces += (L[a] > 0.0 ? c.pos[a] : c.neg[a]) * std::abs(L[a]);
+    return std::min(faces, lambert);
+}
+
 // Irradiance on a surface facing the light and the unit vector toward it.
 inline dvec3 irradiance(const scene::PlacedLight& pl, const dvec3& P, dvec3& L) {
     const scene::Light& l = pl.light;
@@ -160,11 +179,13 @@ inline double paperEq5(const SyntheticVoxel& v, const dvec3& L) {
 
 enum class Attenuation { Lambert, NormalWeightedChannels, NormalWeightedPaper };
 
-// Direct light + emission of one occupied voxel, no occlusion.
+// Direct light + emission of one occupied voxel, no occlusion; `ambiguous` as
+// lambertAttenuation's.
 inline dvec3 referenceRadiance(const AccumVolume& a, const SyntheticVoxel& v, int x, int y, int z,
-                        const std::vector<scene::PlacedLight>& lights, const vxgi::GridSpec& g, Attenuation mode) {
+                               const std::vector<scene::PlacedLight>& lights, const vxgi::GridSpec& g,
+                               Attenuation mode, bool& ambiguous) {
     const Channels c = channels(a, x, y, z);
-    const dvec3 n = voxelNormal(c);
+    ambiguous = false;
     // The light arrives at the voxel's centre (where the surface lies, on
     // average over where planes cross voxels); only shadows are looked up off it.
     const dvec3 P = dvec3(g.origin) + (dvec3(x, y, z) + 0.5) * double(g.voxelSize);
@@ -174,7 +195,11 @@ inline dvec3 referenceRadiance(const AccumVolume& a, const SyntheticVoxel& v, in
         const dvec3 E = irradiance(pl, P, L);
         double att = 0.0;
         switch (mode) {
-            case Attenuation::Lambert: att = std::max(glm::dot(n, L), 0.0); break;
+            case Attenuation::Lambert: {
+                bool axisFaces = false;
+                att = lambertAttenuation(c, L, axisFaces, ambiguous);
+                break;
+            }
             case Attenuation::NormalWeightedChannels:
                 att = glm::dot(c.pos, glm::max(L, 0.0)) + glm::dot(c.neg, glm::max(-L, 0.0));
                 break;
