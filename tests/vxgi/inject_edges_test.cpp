@@ -186,56 +186,64 @@ TEST_F(InjectEdges, EdgeVoxelsAreLitFaceByFace) {
     }
 }
 
-// A box's edge: a voxel of one +x fragment and one +y fragment, lit head on
-// along +x by a sun. Its +x face gets E rho / pi; its +y face, edge on, none;
-// so the voxel as a whole holds half of E rho / pi, with either --edge-voxels.
-// Lit as a plane with the mean normal (+x +y)/sqrt(2) it held 1/sqrt(2) of it.
-TEST_F(InjectEdges, BoxEdgeLitAlongOneFace) {
+// One voxel of one +x and one +y fragment (a box's edge, or a room's inside
+// corner), albedo (0.5, 0.25, 1), lit by the test sun travelling along
+// `direction`: its direct light, its side-light texel (the faces' light with
+// --edge-voxels faces) and the colour E rho / pi is scaled by.
+struct LitEdge {
+    glm::vec4 direct;
+    glm::uvec4 sides;
+    glm::vec3 colour;
+};
+
+LitEdge injectOneEdge(const glm::vec3& direction, bool edgeFaces) {
     std::vector<SyntheticVoxel> voxels(size_t(kN) * kN * kN);
     SyntheticVoxel& edge = voxels[voxelIndex(kN, 5, 6, 7)];
     edge.albedo = glm::vec3(0.5f, 0.25f, 1.0f);
     edge.normals = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
     const SyntheticGrid sg(voxels);
     const auto& [synthetic, accum, volumes, pass] = sg;
-    scene::PlacedLight sunAlongX = sun();
-    sunAlongX.direction = glm::vec3(-1.0f, 0.0f, 0.0f);
-    const double full = 3.0 / kPi;  // E rho / pi per unit albedo, the sun's intensity 3
-    const glm::vec3 colour = sunAlongX.light.color * edge.albedo;
+    scene::PlacedLight light = sun();
+    light.direction = glm::normalize(direction);
+    LitEdge out;
+    out.direct = inject(volumes, pass, {light}, false, false, edgeFaces).at(5, 6, 7);
+    out.sides = vxgi::readSideLight(context(), volumes)[voxelIndex(kN, 5, 6, 7)];
+    out.colour = light.light.color * edge.albedo;
+    return out;
+}
+
+constexpr double kSunFull = 3.0 / kPi;  // E rho / pi per unit albedo, the test sun's intensity 3
+
+// Lit head on along +x: its +x face gets E rho / pi, its +y face, edge on,
+// none; so the voxel as a whole holds half of E rho / pi, with either
+// --edge-voxels. Lit as a plane with the mean normal (+x +y)/sqrt(2) it held
+// 1/sqrt(2) of it.
+TEST_F(InjectEdges, BoxEdgeLitAlongOneFace) {
     for (bool edgeFaces : {true, false}) {
-        const glm::vec4 got = inject(volumes, pass, {sunAlongX}, false, false, edgeFaces).at(5, 6, 7);
-        const double share = 0.5;
+        const LitEdge got = injectOneEdge(glm::vec3(-1.0f, 0.0f, 0.0f), edgeFaces);
+        const double want = 0.5 * kSunFull;
         for (int ch = 0; ch < 3; ++ch)
-            EXPECT_NEAR(got[ch], full * share * colour[ch], 1.5e-3 * full * share * colour[ch])
+            EXPECT_NEAR(got.direct[ch], want * got.colour[ch], 1.5e-3 * want * got.colour[ch])
                 << (edgeFaces ? "faces" : "whole") << " channel " << ch;
         if (!edgeFaces) continue;
-        const glm::uvec4 t = vxgi::readSideLight(context(), volumes)[voxelIndex(kN, 5, 6, 7)];
-        const glm::vec3 faceX = vxgi::unpackRgb9e5(t.x), faceY = vxgi::unpackRgb9e5(t.y);
+        const glm::vec3 faceX = vxgi::unpackRgb9e5(got.sides.x), faceY = vxgi::unpackRgb9e5(got.sides.y);
         for (int ch = 0; ch < 3; ++ch) {
-            EXPECT_NEAR(faceX[ch], full * colour[ch], 2e-3 * full) << "the +x face, head on";
+            EXPECT_NEAR(faceX[ch], kSunFull * got.colour[ch], 2e-3 * kSunFull) << "the +x face, head on";
             EXPECT_EQ(faceY[ch], 0.0f) << "the +y face, edge on";
         }
     }
 }
 
-// The same voxel lit along (+x +y)/sqrt(2): each face gets cos 45 degrees,
-// so the voxel holds E rho / pi / sqrt(2); with the mean normal it got the
-// whole E rho / pi, the sqrt(2) too much that made cornell-lights' corners
-// too bright (docs/quality.md, "Edge voxels of axis faces").
+// Lit along (+x +y)/sqrt(2): each face gets cos 45 degrees, so the voxel
+// holds E rho / pi / sqrt(2); with the mean normal it got the whole E rho /
+// pi, the sqrt(2) too much that made cornell-lights' corners too bright
+// (docs/quality.md, "Edge voxels of axis faces").
 TEST_F(InjectEdges, EdgeLitAlongBothFacesHoldsTheirMeanCosine) {
-    std::vector<SyntheticVoxel> voxels(size_t(kN) * kN * kN);
-    SyntheticVoxel& edge = voxels[voxelIndex(kN, 5, 6, 7)];
-    edge.albedo = glm::vec3(0.5f, 0.25f, 1.0f);
-    edge.normals = {glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f)};
-    const SyntheticGrid sg(voxels);
-    const auto& [synthetic, accum, volumes, pass] = sg;
-    scene::PlacedLight sunAlongBoth = sun();
-    sunAlongBoth.direction = glm::normalize(glm::vec3(-1.0f, -1.0f, 0.0f));
-    const double want = 3.0 / kPi / std::sqrt(2.0);
-    const glm::vec3 colour = sunAlongBoth.light.color * edge.albedo;
     for (bool edgeFaces : {true, false}) {
-        const glm::vec4 got = inject(volumes, pass, {sunAlongBoth}, false, false, edgeFaces).at(5, 6, 7);
+        const LitEdge got = injectOneEdge(glm::vec3(-1.0f, -1.0f, 0.0f), edgeFaces);
+        const double want = kSunFull / std::sqrt(2.0);
         for (int ch = 0; ch < 3; ++ch)
-            EXPECT_NEAR(got[ch], want * colour[ch], 1.5e-3 * want * colour[ch])
+            EXPECT_NEAR(got.direct[ch], want * got.colour[ch], 1.5e-3 * want * got.colour[ch])
                 << (edgeFaces ? "faces" : "whole") << " channel " << ch;
     }
 }
