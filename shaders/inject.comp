@@ -140,9 +140,9 @@ void main() {
     // bounces came out above its reference. Where only one does (a sill's
     // edge: its sunlit top, its wall's face turned away) a voxel shown the
     // same from every side cannot be right from both; it keeps the lower, as
-    // a two-sided voxel shows its darker side: lit by its faces, the room
-    // lit through a window saw its sill glow 2-3 % (docs/quality.md, "Edge
-    // voxels of axis faces").
+    // a two-sided voxel shows its darker side: lit by their faces alone, such
+    // edges at its window made a room lit through it 2.4 % brighter at 128^3
+    // (docs/quality.md, "Edge voxels of axis faces").
     bool axisFaces = !edges && pc.flags.y == 0u && code == SIDE_ONE &&
                      voxelPlaneShare(slot, pos, neg) < AXIS_FACES_BELOW_PLANE_SHARE;
     vec3 face[3] = vec3[3](radiance, radiance, radiance);

@@ -47,7 +47,7 @@ DVSGI_CONST(float, FACES_BELOW_PLANE_SHARE, 0.99);
 // A one-sided voxel whose fragments all lie along the axes (plane share below
 // this: an edge or corner of axis faces) is lit face by face in the default
 // voxel light too, and shows the lesser of that and Lambert with its mean
-// normal (inject.comp, "axis edges").
+// normal (inject.comp, axisFaces).
 DVSGI_CONST(float, AXIS_FACES_BELOW_PLANE_SHARE, 0.05);
 
 // The part of its voxel a surface covers (where the voxel light looks a
