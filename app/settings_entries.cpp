@@ -426,8 +426,8 @@ std::vector<Setting> imageAndVoxels() {
                     FIELD(settings.voxelLight.backsDark)),
              "off"),
         with(choice({"edge-voxels", kVoxelLight, "whole|faces", "",
-                     "voxels that hold an edge or a corner: whole = a cube lit with the mean normal, as every "
-                     "voxel; faces = rays pass beside the part of a voxel its surface does not reach (its "
+                     "voxels that hold an edge or a corner: whole = a cube lit with the mean normal (one of axis "
+                     "faces: the lesser of that and its faces lit one by one); faces = rays pass beside the part of a voxel its surface does not reach (its "
                      "triangles' boxes; --voxelizer pv: whole voxels), and an edge's faces are lit and shown one "
                      "by one (with --normal-weighted off)",
                      kAll, kFrame},

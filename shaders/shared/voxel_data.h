@@ -44,8 +44,9 @@ DVSGI_CONST(uint, VOXEL_CHANNELS, 16);
 // A one-sided voxel less than this share one plane shows its faces
 // (--edge-voxels faces; lib/voxel_attributes.glsl, voxelShowsFaces).
 DVSGI_CONST(float, FACES_BELOW_PLANE_SHARE, 0.99);
-// A one-sided voxel whose fragments all lie along the axes (plane share below
-// this: an edge or corner of axis faces) is lit face by face in the default
+// A one-sided voxel of plane share below this (its normals' first moment no
+// longer than faces along the axes give: an edge or corner of axis faces, or
+// a fold tilted a little off the axes) is lit face by face in the default
 // voxel light too, and shows the lesser of that and Lambert with its mean
 // normal (inject.comp, axisFaces).
 DVSGI_CONST(float, AXIS_FACES_BELOW_PLANE_SHARE, 0.05);

@@ -122,8 +122,8 @@ inline uint32_t sideCode(const Channels& c) {
 }
 
 // The default voxel light's attenuation toward unit L (inject.comp, Lambert):
-// N.L with the mean normal, but a one-sided voxel of faces along the axes only
-// (plane share below AXIS_FACES_BELOW_PLANE_SHARE) gets the lesser of that and
+// N.L with the mean normal, but a one-sided voxel of plane share below
+// AXIS_FACES_BELOW_PLANE_SHARE (faces along the axes, or a fold a little off them) gets the lesser of that and
 // its faces' cosines weighted by their shares. `axisFaces`: the voxel is such
 // an edge; `ambiguous`: float rounding could take the other branch than double.
 inline double lambertAttenuation(const Channels& c, const dvec3& L, bool& axisFaces, bool& ambiguous) {
