@@ -160,8 +160,11 @@ void main() {
         if (area) dist -= 2.0 * s / max(abs(dot(light.direction.xyz, L)), 0.2);
         float cosN = max(dot(n, L), 0.0);
         if (axisFaces) {
+            float byNormal = cosN > 0.0 ? cosN * visibility(light, mode, onSurface, P, n, L, dist) : 0.0;
+            // The lesser is 0 where the mean normal is turned away or shadowed:
+            // the faces' lookups are spent only where they can matter.
             float byFaces = 0.0;
-            for (int a = 0; a < 3; ++a) {
+            for (int a = 0; a < 3 && byNormal > 0.0; ++a) {
                 float w = L[a] > 0.0 ? pos[a] : neg[a];
                 if (w <= 0.0 || L[a] == 0.0) continue;
                 vec3 e = vec3(0.0);
@@ -169,7 +172,6 @@ void main() {
                 byFaces += w * abs(L[a]) *
                            visibility(light, mode, surfaceFace(boxLo, boxHi, a, e[a] > 0.0), centre + e * (0.5 * s), e, L, dist);
             }
-            float byNormal = cosN > 0.0 ? cosN * visibility(light, mode, onSurface, P, n, L, dist) : 0.0;
             radiance += albedo / PI * E * min(byFaces, byNormal);
         } else if (!edges) {
             // Eq. 5 generalized to signed weights: sum over axes of the weight of
