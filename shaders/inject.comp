@@ -85,6 +85,15 @@ vec3 surfaceFace(vec3 lo, vec3 hi, int a, bool plus) {
     return grid.originSize.xyz + q * grid.originSize.w;
 }
 
+// The visibility of a voxel's face along axis a on its + or - side (an edge's
+// face, a thin wall's side): its shadow map looked up on that side's face of
+// the extents' box (lo, hi), its voxel rays from just outside the voxel there.
+float faceVisibility(GpuLight light, uint mode, vec3 lo, vec3 hi, vec3 centre, int a, bool plus, vec3 L, float dist) {
+    vec3 e = vec3(0.0);
+    e[a] = plus ? 1.0 : -1.0;
+    return visibility(light, mode, surfaceFace(lo, hi, a, plus), centre + e * (0.5 * grid.originSize.w), e, L, dist);
+}
+
 void main() {
     uint entry = listInvocation();
     if (entry >= list.header.counts.x || list.entries[entry] == VOXEL_LIST_FREE) return;
@@ -167,10 +176,7 @@ void main() {
             for (int a = 0; a < 3 && byNormal > 0.0; ++a) {
                 float w = L[a] > 0.0 ? pos[a] : neg[a];
                 if (w <= 0.0 || L[a] == 0.0) continue;
-                vec3 e = vec3(0.0);
-                e[a] = sign(L[a]);
-                byFaces += w * abs(L[a]) *
-                           visibility(light, mode, surfaceFace(boxLo, boxHi, a, e[a] > 0.0), centre + e * (0.5 * s), e, L, dist);
+                byFaces += w * abs(L[a]) * faceVisibility(light, mode, boxLo, boxHi, centre, a, L[a] > 0.0, L, dist);
             }
             radiance += albedo / PI * E * min(byFaces, byNormal);
         } else if (!edges) {
@@ -195,10 +201,8 @@ void main() {
                 bool ownFace = faces && faceSign[a] * L[a] > 0.0;
                 float cosine = abs(L[a]);
                 if (planeW >= 1.0 || cosine <= 0.0 || (w <= 0.0 && !ownFace)) continue;
-                vec3 e = vec3(0.0);
-                e[a] = L[a] > 0.0 ? 1.0 : -1.0;
                 vec3 faceLight = (1.0 - planeW) * albedo / PI * E * cosine *
-                                 visibility(light, mode, surfaceFace(boxLo, boxHi, a, e[a] > 0.0), centre + e * (0.5 * s), e, L, dist);
+                                 faceVisibility(light, mode, boxLo, boxHi, centre, a, L[a] > 0.0, L, dist);
                 radiance += w * faceLight;
                 if (ownFace) face[a] += faceLight;
             }
@@ -207,9 +211,7 @@ void main() {
         for (int k = 0; k < 2; ++k) {
             float cosine = dot(sideN[k], L);
             if (cosine > 0.0)
-                side[k] += albedo / PI * E * cosine *
-                           visibility(light, mode, surfaceFace(boxLo, boxHi, axis, k == 0), centre + sideN[k] * (0.5 * s),
-                                      sideN[k], L, dist);
+                side[k] += albedo / PI * E * cosine * faceVisibility(light, mode, boxLo, boxHi, centre, axis, k == 0, L, dist);
         }
     }
     imageStore(outDirect, slotTexel(slot, 0u), vec4(radiance, sideCodeAlpha(code)));
